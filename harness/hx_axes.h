@@ -49,7 +49,7 @@ typedef struct {
     int best;                    /**< that map (0: as recorded) */
     char best_map[40];           /**< e.g. "(gx, -gy, gz)" */
     int problem;                 /**< 1: the recorded map is clearly not the gyro's */
-    char msg[1024];              /**< the verdict, with the remedy when problem (for a CSV the whole --columns:
+    char msg[2048];              /**< the verdict, with the remedy when problem (for a CSV the whole --columns:
                                       hx_nav_replay) */
 } hx_axes_result_t;
 

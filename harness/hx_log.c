@@ -4234,15 +4234,19 @@ static void layout_given(hx_csv_layout_t *l, const char *opt)
 
 const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const int neg[3], char *buf, size_t size)
 {
-    char map[8 * 72 + 72], units[96];
+    char map[8 * 72 + 72], word[8 * 72 + 80], units[96];
     size_t len = 0;
-    int k, quote, given;
+    int k, given;
     map[0] = '\0';
+    buf[0] = '\0';
     for (k = 0; k < 8; k++) {
         /* the key's column as l reads it: the gyro's from key src[] */
         const int from = (k >= 4 && k <= 6) ? 4 + src[k - 4] : k;
         const int minus = ((l->negate >> from) & 1) ^ ((k >= 4 && k <= 6) ? (neg[k - 4] != 0) : 0);
         const char *name = l->names[from][0] != '\0' ? l->names[from] : k_csv_names[from];
+        if (strchr(name, ',') != NULL || (k == 0 && strchr(l->tns, ',') != NULL)) {
+            return NULL;
+        }
         /* a default name read as it is needs no word, but the gyro's are
          * always given; tns, after t, whatever t's name */
         if (l->names[from][0] != '\0' || (k >= 4 && k <= 6) || minus) {
@@ -4253,13 +4257,15 @@ const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const in
             len += (size_t)snprintf(map + len, sizeof map - len, "%stns=%s", len > 0u ? "," : "", l->tns);
         }
         if (len >= sizeof map) {
-            break;
+            return NULL;
         }
     }
-    quote = hx_names_need_quotes(map);
     given = strncmp(hx_units_give(l, units, sizeof units), "give ", 5) == 0;
-    snprintf(buf, size, "--columns %s%s%s%s%s", quote ? "'" : "", map, quote ? "'" : "", given ? " " : "",
-             given ? units + 5 : "");
+    if (hx_shell_word(map, 1, word, sizeof word)[0] == '\0' ||
+        (size_t)snprintf(buf, size, "--columns %s%s%s", word, given ? " " : "", given ? units + 5 : "") >= size) {
+        buf[0] = '\0';
+        return NULL;
+    }
     return buf;
 }
 

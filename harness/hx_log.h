@@ -152,8 +152,10 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
  *  --columns given turns the names' matching off, so a partial one would
  *  lose the others), the three gyro keys always, and the --units of l's
  *  units when they are not all the defaults; the map quoted when a name is
- *  not one shell word. The axes check's remedy (docs/harness.md, "Axes
- *  check"). Returns buf. */
+ *  not one shell word (a name's own ' dropped: names match without their
+ *  quotes). The axes check's remedy (docs/harness.md, "Axes check").
+ *  Returns buf; NULL (buf "") when a name holds a ',', which no --columns
+ *  can give (it separates the items), or the text does not fit. */
 const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const int neg[3], char *buf, size_t size);
 /** Parse a --units SPEC ("time=ns,accel=g,gyro=deg/s"; time s|ms|us|ns,
  *  accel m/s2|m/s^2|mps2|g|mg, gyro rad/s|deg/s|dps|mdps|mdeg/s) into l.

@@ -814,10 +814,44 @@ int hx_names_need_quotes(const char *s)
     return 0;
 }
 
+const char *hx_shell_word(const char *s, int names, char *buf, size_t size)
+{
+    size_t n = 0;
+    if (size == 0u) {
+        return buf;
+    }
+    if (!hx_names_need_quotes(s) && *s != '\0') {
+        snprintf(buf, size, "%s", s);
+        return strlen(s) < size ? buf : (buf[0] = '\0', buf);
+    }
+    buf[n++] = '\'';
+    for (; *s != '\0'; s++) {
+        /* room for what is written, the closing quote and the NUL */
+        const size_t w = *s != '\'' ? 1u : names ? 0u : 4u;
+        if (n + w + 2u > size) {
+            buf[0] = '\0';
+            return buf;
+        }
+        if (w == 1u) {
+            buf[n] = *s;
+        } else if (w == 4u) {
+            memcpy(buf + n, "'\\''", 4);
+        }
+        n += w;
+    }
+    if (n + 2u > size) {
+        buf[0] = '\0';
+        return buf;
+    }
+    buf[n++] = '\'';
+    buf[n] = '\0';
+    return buf;
+}
+
 const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size)
 {
-    char map[512], name[128];
-    int k, quote;
+    char map[512], name[128], word[520];
+    int k;
     map[0] = '\0';
     for (k = 0; k < 7; k++) {
         if (m->ncand[k] == 1) {
@@ -833,12 +867,11 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
             }
         }
     }
-    quote = hx_names_need_quotes(map);
     buf[0] = '\0';
     if (map[0] == '\0') {
         return buf;
     }
-    snprintf(buf, size, "--columns %s%s%s", quote ? "'" : "", map, quote ? "'" : "");
+    snprintf(buf, size, "--columns %s", hx_shell_word(map, 1, word, sizeof word));
     {
         char units[64] = "";
         for (k = 0; k < 3; k++) {

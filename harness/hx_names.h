@@ -137,9 +137,14 @@ const char *hx_name_unit_item(hx_name_unit_t u);
  *  (the names as the header spells them), then " --units ITEMS" of the units
  *  named; "" when nothing matched. Returns buf. */
 const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
-/** 1 when the --columns map s is one shell word only quoted (a name with a
- *  blank, a bracket or another character outside [A-Za-z0-9_.,=/+-]). */
+/** 1 when s is one shell word only quoted (a name with a blank, a bracket
+ *  or another character outside [A-Za-z0-9_.,=/+-]). */
 int hx_names_need_quotes(const char *s);
+/** s as one shell word into buf: as it is when nothing in it needs quoting,
+ *  else in single quotes, a ' in s dropped when names (a --columns map: a
+ *  column's name is matched without its quotes, hx_name_eq), else written
+ *  '\''. Returns buf; "" when it does not fit. */
+const char *hx_shell_word(const char *s, int names, char *buf, size_t size);
 
 /** What did not match, for a refusal: "gx: 2 candidates (gyro_x,
  *  gyro_x_filt); gy: none (near misses: gyr_y_lin)", "" when every key

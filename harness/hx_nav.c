@@ -1592,38 +1592,58 @@ static double *cycle_intervals(const hx_traj_t *t, size_t *k)
  * --columns (fmt HX_FMT_AUTO: none), appended to the warning: for a CSV
  * the whole --columns that reads this log's gyro as the map found, since a
  * partial --columns turns the names' matching off; for another format,
- * whose importer has no columns to name, the same for the log converted to
- * the interchange CSV (docs/harness.md, "Axes check"). */
-static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt, const char *path)
+ * whose importer has no columns to name, or a CSV with a ',' in a name
+ * (which --columns cannot give), the same for the log converted to the
+ * interchange CSV, convert given what this run was (--from when given,
+ * --input-rate, a CSV's --units) (docs/harness.md, "Axes check"). */
+static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt, hx_format_t given_fmt, double in_rate,
+                                const char *path)
 {
     static const fnav_vec3_t k_axes = { { FNAV_R(1.0), FNAV_R(2.0), FNAV_R(3.0) } };
-    hx_csv_layout_t lay;
+    hx_csv_layout_t lay, def;
     const hx_csv_layout_t *l;
     fnav_vec3_t m;
-    char give[700];
-    int src[3], neg[3], i;
+    char give[1024], text[2048], word[1100], opts[160] = "", units[96];
+    int src[3], neg[3], i, ok;
     size_t len;
     if (!a->problem || fmt == HX_FMT_AUTO) {
         return;
     }
     l = hx_units_layout(fmt, &lay);
-    if (l == NULL) {
-        hx_csv_layout_default(&lay); /* convert writes the interchange names, in SI */
-    }
     /* the map's source axis and sign, read off the axes (1, 2, 3) mapped */
     m = hx_axes_map(a->best, k_axes);
     for (i = 0; i < 3; i++) {
         neg[i] = m.v[i] < FNAV_R(0.0);
         src[i] = (int)(neg[i] ? -m.v[i] : m.v[i]) - 1;
     }
-    (void)hx_columns_give(l != NULL ? l : &lay, src, neg, give, sizeof give);
-    len = strlen(a->msg);
-    if (l != NULL) {
-        snprintf(a->msg + len, sizeof a->msg - len, "; this log so read: %s", give);
+    if (l != NULL && hx_columns_give(l, src, neg, give, sizeof give) != NULL) {
+        ok = snprintf(text, sizeof text, "; this log so read: %s", give) < (int)sizeof text;
     } else {
-        snprintf(a->msg + len, sizeof a->msg - len,
-                 "; this log so read: bin/harness convert %s F.csv (the %s format to the interchange CSV), then "
-                 "F.csv with %s", path, hx_format_name(fmt), give);
+        hx_csv_layout_default(&def); /* convert writes the interchange names, in SI */
+        len = 0;
+        if (given_fmt != HX_FMT_AUTO) {
+            len += (size_t)snprintf(opts + len, sizeof opts - len, " --from %s", hx_format_name(given_fmt));
+        }
+        if (in_rate > 0.0 && len < sizeof opts) {
+            len += (size_t)snprintf(opts + len, sizeof opts - len, " --input-rate %.17g", in_rate);
+        }
+        if (l != NULL && len < sizeof opts && strncmp(hx_units_give(l, units, sizeof units), "give ", 5) == 0) {
+            (void)snprintf(opts + len, sizeof opts - len, " %s", units + 5);
+        }
+        ok = hx_columns_give(&def, src, neg, give, sizeof give) != NULL &&
+             hx_shell_word(path, 0, word, sizeof word)[0] != '\0' &&
+             snprintf(text, sizeof text,
+                      "; this log so read: bin/harness convert %s F.csv%s (the %s%s to the interchange CSV), then "
+                      "F.csv with %s", word, opts,
+                      l != NULL ? "CSV, whose names hold a ',' no --columns can give," : hx_format_name(fmt),
+                      l != NULL ? "" : " format", give) < (int)sizeof text;
+    }
+    len = strlen(a->msg);
+    if (ok && strlen(text) < sizeof a->msg - len) {
+        memcpy(a->msg + len, text, strlen(text) + 1);
+    } else {
+        snprintf(a->msg + len, sizeof a->msg - len, "; the options that read this log so are too long for this "
+                                                    "message (docs/harness.md, \"Axes check\")");
     }
 }
 
@@ -1827,7 +1847,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->events = pc.ev != NULL && !pc.ev_bad;
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
-            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, path);
+            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, fmt, in_rate,
+                                path);
         } else {
             snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: not asked for");
         }

@@ -3759,6 +3759,45 @@ static void test_columns_give(void **state)
     assert_int_equal(hx_csv_units_parse(&l, "time=ms", err, sizeof err), 0);
     assert_string_equal(hx_columns_give(&l, k_swap, k_none, buf, sizeof buf),
                         "--columns t=time_ms,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_y,gy=gyr_x,gz=gyr_z --units time=ms");
+    /* a ' in a name is dropped inside the quotes: names match without
+     * their quotes (hx_name_eq), so the map read back finds the column */
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=Time [s],ax=Acc'X,ay=ay,az=az,gx=Gyr'X,gy=gy,gz=gz", err, sizeof err),
+                     0);
+    assert_string_equal(hx_columns_give(&l, k_same, k_flip_y, buf, sizeof buf),
+                        "--columns 't=Time [s],ax=AccX,ay=ay,az=az,gx=GyrX,gy=-gy,gz=gz'");
+    snprintf(map, sizeof map, "%.*s", (int)(strlen(buf) - strlen("--columns ''")), buf + strlen("--columns '"));
+    hx_csv_layout_default(&back);
+    assert_int_equal(hx_csv_columns_parse(&back, map, err, sizeof err), 0);
+    assert_true(hx_name_eq(back.names[1], l.names[1]));
+    assert_true(hx_name_eq(back.names[4], l.names[4]));
+    /* a ',' in a name: no --columns can give it (it separates the items) */
+    snprintf(l.names[4], sizeof l.names[4], "%s", "w,x");
+    assert_null(hx_columns_give(&l, k_same, k_flip_y, buf, sizeof buf));
+    assert_string_equal(buf, "");
+    /* a buffer too small: NULL, nothing cut short */
+    hx_csv_layout_default(&l);
+    assert_null(hx_columns_give(&l, k_swap, k_none, buf, 20));
+    assert_string_equal(buf, "");
+}
+
+/* hx_shell_word: a word as it is, else single-quoted, a ' written '\'' (or
+ * dropped for a --columns map); "" when it does not fit */
+static void test_shell_word(void **state)
+{
+    char buf[64];
+    (void)state;
+    assert_string_equal(hx_shell_word("/tmp/walk-1.bin", 0, buf, sizeof buf), "/tmp/walk-1.bin");
+    assert_string_equal(hx_shell_word("my walk's.bin", 0, buf, sizeof buf), "'my walk'\\''s.bin'");
+    assert_string_equal(hx_shell_word("t=Time [s],ax=Acc'X", 1, buf, sizeof buf), "'t=Time [s],ax=AccX'");
+    assert_string_equal(hx_shell_word("", 0, buf, sizeof buf), "''");
+    assert_string_equal(hx_shell_word("a*b", 0, buf, sizeof buf), "'a*b'");
+    /* fits exactly: 'a b' is 5 characters and the NUL */
+    assert_string_equal(hx_shell_word("a b", 0, buf, 6), "'a b'");
+    assert_string_equal(hx_shell_word("a b", 0, buf, 5), "");
+    assert_string_equal(hx_shell_word("ab", 0, buf, 2), "");
+    assert_string_equal(hx_shell_word("x'y", 0, buf, 9), "'x'\\''y'");
+    assert_string_equal(hx_shell_word("x'y", 0, buf, 8), "");
 }
 
 /* --columns tns=NAME: nanoseconds added to t's whole seconds (a stamp split
@@ -4943,6 +4982,7 @@ int main(void)
         cmocka_unit_test_teardown(test_columns_tns, layout_reset),
         cmocka_unit_test_teardown(test_columns_negate, layout_reset),
         cmocka_unit_test(test_columns_give),
+        cmocka_unit_test(test_shell_word),
         cmocka_unit_test(test_picoquake),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),

@@ -616,6 +616,52 @@ expect_exit 0 "the remedy's --columns" "$H" replay "$T/ax_flip_conv.csv" --colum
     --out "$T/ax_flip_conv_traj.csv" --quiet
 if cmp -s "$T/ax_flip_conv_traj.csv" "$T/m_ref.csv"; then pass "the .bin's remedy followed: the walk's trajectory, byte for byte"
 else fail "the .bin's remedy followed: the trajectory differs from the walk's"; fi
+# a path with a blank and a ' is printed as one shell word; the remedy
+# followed as printed (convert run from the text of the warning, F.csv in $T)
+cp "$T/ax_flip.bin" "$T/a walk's.bin"
+expect_exit 0 "axes check: a .bin whose path holds a blank and a '" "$H" replay "$T/a walk's.bin" --quiet --from bin
+if grep -qF -- "this log so read: bin/harness convert '$T/a walk'\\''s.bin' F.csv --from bin (the bin format" "$T/err"; then
+    pass "axes check: the path quoted, --from given again"
+else fail "axes check: the path not quoted or --from not given: $(cat "$T/err")"; fi
+axconv=$(sed -n "s/.*this log so read: bin\/harness convert \(.*\) (the bin format to the interchange CSV), then F.csv with \(.*\); outputs.*/\1/p" "$T/err")
+axcols=$(sed -n "s/.*this log so read: bin\/harness convert .* (the bin format to the interchange CSV), then F.csv with \(.*\); outputs.*/\1/p" "$T/err")
+rm -f "$T/F.csv"
+if [ -n "$axconv" ] && (cd "$T" && eval "\"\$H\" convert $axconv") 2>/dev/null &&
+    eval "\"\$H\" replay \"\$T/F.csv\" $axcols --out \"\$T/ax_q_traj.csv\" --quiet" 2>/dev/null &&
+    cmp -s "$T/ax_q_traj.csv" "$T/m_ref.csv"; then
+    pass "axes check: the quoted path's remedy followed as printed: the walk's trajectory, byte for byte"
+else fail "axes check: the quoted path's remedy ('$axconv', '$axcols') did not give the walk's trajectory"; fi
+# names given with a ' in them: the printed map drops it inside its quotes
+# (names match without their quotes) and reads the log as the map found
+sed "1s/Acc/Acc'/g; 1s/Gyro/Gyro'/g" "$T/ax_named.csv" >"$T/ax_quote.csv"
+expect_exit 0 "axes check: names with a ' given by --columns" "$H" replay "$T/ax_quote.csv" --quiet --units time=ms,accel=g,gyro=deg/s \
+    --columns "t=Time [ms],ax=Acc'X [g],ay=Acc'Y [g],az=Acc'Z [g],gx=Gyro'X [deg/s],gy=Gyro'Y [deg/s],gz=Gyro'Z [deg/s]"
+axfix="--columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],gy=-GyroY [deg/s],gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s"
+if grep -qF -- "this log so read: $axfix; outputs were computed" "$T/err"; then pass "axes check: the names' ' dropped in the remedy"
+else fail "axes check: names with a ': the warning lacks 'this log so read: $axfix'"; cat "$T/err"; fi
+if eval "\"\$H\" replay \"\$T/ax_quote.csv\" $axfix --out \"\$T/ax_quote_fix.csv\" --quiet" 2>"$T/err" &&
+    cmp -s "$T/ax_quote_fix.csv" "$T/m_ref.csv"; then
+    pass "axes check: names with a ' read with the warning's options: the walk's trajectory, byte for byte"
+else fail "axes check: names with a ' read with the warning's options: $(cat "$T/err")"; fi
+# nine names of 63 characters (t split in s and ns, a temperature): the
+# warning gives the whole remedy (its message, over 1,024 bytes, was cut there)
+/usr/bin/python3 - "$T/m.csv" "$T/ax_long.csv" "$T/ax_long.map" <<'PY'
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
+keys = ['t', 'ax', 'ay', 'az', 'gx', 'gy', 'gz', 'temp', 'tns']
+name = {k: (k + ' [long column name] ').ljust(63, 'x') for k in keys}
+t0 = np.floor(d['t'])
+np.savetxt(sys.argv[2], np.column_stack([t0, d['ax'], d['ay'], d['az'], d['gx'], -d['gy'], d['gz'], d['t'] * 0 + 25,
+                                         np.round((d['t'] - t0) * 1e9)]), delimiter=',',
+           header=','.join(name[k] for k in keys), comments='', fmt=['%d'] + ['%.9g'] * 7 + ['%d'])
+open(sys.argv[3], 'w').write(','.join('%s=%s' % (k, name[k]) for k in keys))
+PY
+expect_exit 0 "axes check: nine names of 63 characters" "$H" replay "$T/ax_long.csv" --columns "$(cat "$T/ax_long.map")" --quiet
+axfix=$(sed -n 's/.*this log so read: \(.*\); outputs were computed from the axes as recorded$/\1/p' "$T/err")
+if [ -n "$axfix" ] && eval "\"\$H\" replay \"\$T/ax_long.csv\" $axfix --out \"\$T/ax_long_fix.csv\" --quiet" 2>/dev/null &&
+    cmp -s "$T/ax_long_fix.csv" "$T/m_ref.csv"; then
+    pass "axes check: long names, the whole remedy given; followed, the walk's trajectory byte for byte"
+else fail "axes check: long names, the remedy '$axfix' cut short or not the walk's trajectory: $(cat "$T/err")"; fi
 if /usr/bin/python3 -c "
 import json, sys
 a = json.load(open(sys.argv[1]))['axes']
