@@ -1335,16 +1335,22 @@ static int read_again_from(hx_reader_t *r, z_off_t pos, long lines)
 
 /* PicoQuake's preamble, the '#' lines before its header: the rate of the
  * sample count from "# Config: data_rate = 2000.0 Hz, filter = ..." (the
- * writer's Config; older ones write the number without "Hz") into *fs_hz
- * (0: no such line) and its line; the reader then stands before the header.
- * 0 ok, -1 error (err set: a data_rate that is no rate in Hz). */
-static int pq_preamble(hx_reader_t *r, double *fs_hz, long *line)
+ * writer's Config, with "Hz" or without as PLab's versions differ) into
+ * *fs_hz (0: no such line) and its line; the reader then stands before the
+ * header. A data_rate of 2 without "Hz" is 12.5 Hz: the device has no
+ * 2 Hz setting, and a version of PLab's library writes 2 for its 12.5 Hz
+ * (DataRate.hz_12_5 = 1, 2); said in a warning. A second Config line is
+ * not read (a warning). A data_rate that is no rate in Hz is refused, or
+ * with --input-rate (rate_hz > 0) warned about. 0 ok, -1 error (err set). */
+static int pq_preamble(hx_reader_t *r, double rate_hz, double *fs_hz, long *line)
 {
     for (;;) {
         const z_off_t pos = gztell(r->gz);
         const long lines = r->stats.lines;
         const char *p;
         char *end;
+        double fs = 0.0;
+        int hz = 0;
         const int rc = read_line(r);
         if (rc <= 0) {
             if (rc == 0) {
@@ -1359,6 +1365,11 @@ static int pq_preamble(hx_reader_t *r, double *fs_hz, long *line)
         if (strncmp(r->line, "# Config:", 9) != 0 || p == NULL) {
             continue;
         }
+        if (*line > 0) {
+            add_warn(r, "%s:%ld: a second '# Config:' line, not read (the data_rate of line %ld is)", r->path,
+                     r->stats.lines, *line);
+            continue;
+        }
         p += 9;
         while (*p == ' ' || *p == '\t') {
             p++;
@@ -1366,20 +1377,36 @@ static int pq_preamble(hx_reader_t *r, double *fs_hz, long *line)
         end = NULL;
         if (*p == '=') {
             p++;
-            *fs_hz = strtod(p, &end);
+            fs = strtod(p, &end);
             while (end != p && (*end == ' ' || *end == '\t')) {
                 end++;
             }
             if (end != p && (end[0] == 'H' || end[0] == 'h') && (end[1] == 'z' || end[1] == 'Z')) {
                 end += 2;
+                hz = 1;
             }
         }
         if (end == NULL || end == p || !(*end == ',' || *end == '\r' || *end == '\n' || *end == '\0') ||
-            !(*fs_hz >= 1.0e-3 && *fs_hz < 1.0e6)) {
-            set_err(r, "%s:%ld: expected '# Config: data_rate = N Hz, ...', a rate in Hz in [0.001, 1e+06)", r->path,
-                    r->stats.lines);
+            !(fs >= 1.0e-3 && fs < 1.0e6)) {
+            if (rate_hz > 0.0) {
+                add_warn(r, "%s:%ld: the data_rate of '# Config:' is no rate in Hz; --input-rate %g Hz is read",
+                         r->path, r->stats.lines, rate_hz);
+                *line = r->stats.lines;
+                continue;
+            }
+            set_err(r, "%s:%ld: expected '# Config: data_rate = N Hz, ...', a rate in Hz in [0.001, 1e+06) (or "
+                       "give the rate with --input-rate)", r->path, r->stats.lines);
             return -1;
         }
+        if (fs == 2.0 && !hz) {
+            fs = 12.5;
+            if (!(rate_hz > 0.0)) {
+                add_warn(r, "%s:%ld: data_rate = 2 read as 12.5 Hz: PicoQuake has no 2 Hz setting, and a version of "
+                            "PLab's library writes 2 for 12.5 Hz (give --input-rate if the rate was another)",
+                         r->path, r->stats.lines);
+            }
+        }
+        *fs_hz = fs;
         *line = r->stats.lines;
     }
 }
@@ -2064,12 +2091,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         static const char *const names[8] = { "count", "a_x", "a_y", "a_z", "g_x", "g_y", "g_z", NULL };
         long config_line = 0;
         double fs = 0.0;
-        if (pq_preamble(r, &fs, &config_line) != 0) {
+        if (pq_preamble(r, rate_hz, &fs, &config_line) != 0) {
             return -1;
         }
         if (!(fs > 0.0) && !(rate_hz > 0.0)) {
             set_err(r, "%s: no '# Config: data_rate = N' line before the header: the sample count's rate is not "
-                       "known (give --input-rate)", r->path);
+                       "known (give --input-rate; the header count,a_x,...,g_z is read as PLab PicoQuake's, in g and "
+                       "deg/s: for another layout give --from csv with --columns and --units)", r->path);
             return -1;
         }
         /* the device's units (its docs, "Acquisition CSV File"): g and deg/s */

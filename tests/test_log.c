@@ -2618,10 +2618,13 @@ static void test_ipol_counter_wrap(void **state)
 
 /* PicoQuake's acquisition CSV (its writer, AcquisitionData.to_csv): the
  * first line names it; the count's rate is the '# Config:' line's
- * data_rate (with "Hz" or, as older writers put it, without); g and deg/s
+ * data_rate (with "Hz" or without, as PLab's versions differ); g and deg/s
  * to SI; a count skipped is a drop; --input-rate replaces the rate with a
  * warning; the header alone (the preamble cut off) is known but needs
- * --input-rate; a data_rate that is no rate is refused at its line. */
+ * --input-rate; a data_rate that is no rate is refused at its line, or
+ * with --input-rate warned about; "data_rate = 2" (PLab's library's
+ * 12.5 Hz) is 12.5 Hz with a warning, "2 Hz" is 2 Hz; a second Config
+ * line is not read, with a warning. */
 static void test_picoquake(void **state)
 {
     static const char *const pre = "# PLab PicoQuake Data\n"
@@ -2634,18 +2637,28 @@ static void test_picoquake(void **state)
         const char *config; /* the '# Config:' line ("" none) */
         double rate_opt, rate_hz;
         int ok;
-        const char *err; /* NULL: no error */
+        const char *err;  /* NULL: no error */
+        const char *warn; /* a warning said (NULL: none of the preamble's) */
     } k[] = {
         { "# Config: data_rate = 500.0 Hz, filter = 42 Hz, acc_range = 4 g, gyro_range = 250.0 dps\n", 0.0, 500.0, 1,
-          NULL },
-        { "# Config: data_rate = 500.0, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 500.0, 1, NULL },
+          NULL, NULL },
+        { "# Config: data_rate = 500.0, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 500.0, 1, NULL, NULL },
         { "# Config: data_rate = 500.0 Hz, filter = 42 Hz, acc_range = 4 g, gyro_range = 250.0 dps\n", 250.0, 250.0,
-          1, NULL },
-        { "", 0.0, 0.0, 0, "no '# Config: data_rate = N' line before the header" },
-        { "", 200.0, 200.0, 1, NULL },
+          1, NULL, "--input-rate 250 Hz replaces the rate the file states (500 Hz on line 4)" },
+        { "", 0.0, 0.0, 0, "no '# Config: data_rate = N' line before the header", NULL },
+        { "", 200.0, 200.0, 1, NULL, NULL },
         { "# Config: data_rate = fast, filter = 42\n", 0.0, 0.0, 0,
-          ":4: expected '# Config: data_rate = N Hz, ...', a rate in Hz" },
-        { "# Config: data_rate = 500 kHz, filter = 42\n", 0.0, 0.0, 0, ":4: expected '# Config: data_rate" },
+          ":4: expected '# Config: data_rate = N Hz, ...', a rate in Hz", NULL },
+        { "# Config: data_rate = 500 kHz, filter = 42\n", 0.0, 0.0, 0, ":4: expected '# Config: data_rate", NULL },
+        { "# Config: data_rate = fast, filter = 42\n", 250.0, 250.0, 1, NULL,
+          ":4: the data_rate of '# Config:' is no rate in Hz; --input-rate 250 Hz is read" },
+        { "# Config: data_rate = 2, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 12.5, 1, NULL,
+          ":4: data_rate = 2 read as 12.5 Hz: PicoQuake has no 2 Hz setting" },
+        { "# Config: data_rate = 2 Hz, filter = 42 Hz\n", 0.0, 2.0, 1, NULL, NULL },
+        { "# Config: data_rate = 2, filter = 42\n", 100.0, 100.0, 1, NULL,
+          "--input-rate 100 Hz replaces the rate the file states (12.5 Hz on line 4)" },
+        { "# Config: data_rate = 500.0 Hz, filter = 42 Hz\n# Config: data_rate = 100.0 Hz, filter = 42 Hz\n", 0.0,
+          500.0, 1, NULL, ":5: a second '# Config:' line, not read (the data_rate of line 4 is)" },
     };
     char p[256], err[320], text[1024];
     hx_log_t log;
@@ -2675,8 +2688,13 @@ static void test_picoquake(void **state)
         assert_true(fabs(log.acc[0][2] - HX_G_MPS2) <= 6e-8 * HX_G_MPS2);
         assert_true(fabs(log.gyr[0][0] - 90.0 * HX_DPS_RPS) <= 6e-8 * 90.0 * HX_DPS_RPS);
         assert_true(fabs(log.gyr[0][1] + 45.0 * HX_DPS_RPS) <= 6e-8 * 45.0 * HX_DPS_RPS);
-        assert_true((strstr(log.warnings, "--input-rate 250 Hz replaces the rate the file states (500 Hz on line 4)") !=
-                     NULL) == (k[i].rate_opt == 250.0));
+        if (k[i].warn != NULL) {
+            assert_non_null(strstr(log.warnings, k[i].warn));
+        } else {
+            assert_null(strstr(log.warnings, "replaces"));
+            assert_null(strstr(log.warnings, "Config"));
+            assert_null(strstr(log.warnings, "data_rate"));
+        }
         assert_string_equal(log.meta.sensor, "PLab PicoQuake (ICM-42688-P)");
         hx_log_free(&log);
     }
@@ -2684,7 +2702,8 @@ static void test_picoquake(void **state)
     write_text(p, rows);
     assert_int_equal(hx_detect_file(p), HX_FMT_PICOQUAKE);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
-    assert_non_null(strstr(err, "(give --input-rate)"));
+    assert_non_null(strstr(err, "(give --input-rate; the header count,a_x,...,g_z is read as PLab PicoQuake's, in g "
+                                "and deg/s: for another layout give --from csv with --columns and --units)"));
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 500.0, err, sizeof err), 0);
     assert_int_equal(log.n, 4);
     hx_log_free(&log);

@@ -714,8 +714,32 @@ if [ -s "$T/pq_ref_out.csv" ] && cmp -s "$T/pq_ref_out.csv" "$T/pq_out.csv"; the
 else fail "PicoQuake file: trajectory differs: $(cmp "$T/pq_ref_out.csv" "$T/pq_out.csv" 2>&1)"; fi
 tail -n +6 "$T/pq.csv" >"$T/pq_bare.csv"
 expect_exit 1 "a PicoQuake file without its preamble" "$H" info "$T/pq_bare.csv"
-expect_err "pq_bare.csv: no '# Config: data_rate = N' line before the header: the sample count's rate is not known (give --input-rate)" \
+expect_err "pq_bare.csv: no '# Config: data_rate = N' line before the header: the sample count's rate is not known (give --input-rate;" \
     "PicoQuake without its preamble: --input-rate named"
+# the same with g_y the other sign, read with --input-rate: the axes check's
+# remedy converts it with the rate given, and followed as printed (from
+# $T, F.csv there) the walk's trajectory again, byte for byte
+"${PY:-/usr/bin/python3}" - "$T/pq_bare.csv" "$T/pq_flip.csv" <<'PY' 2>"$T/pyerr" || fail "writing the flipped PicoQuake file: $(cat "$T/pyerr")"
+import sys
+with open(sys.argv[1]) as src, open(sys.argv[2], 'w') as dst:
+    dst.write(src.readline())
+    for line in src:
+        f = line.rstrip('\n').split(',')
+        f[5] = f[5][1:] if f[5].startswith('-') else '-' + f[5]
+        dst.write(','.join(f) + '\n')
+PY
+expect_exit 0 "replay the PicoQuake file with g_y flipped, --input-rate 400" "$H" replay "$T/pq_flip.csv" --input-rate 400 --quiet
+pqconv=$(sed -n "s/.*this log so read: bin\/harness convert \(.*\) (the picoquake format to the interchange CSV), then F.csv with \(.*\); outputs.*/\1/p" "$T/err")
+pqcols=$(sed -n "s/.*this log so read: bin\/harness convert .* (the picoquake format to the interchange CSV), then F.csv with \(.*\); outputs.*/\1/p" "$T/err")
+if [ "$pqconv" = "$T/pq_flip.csv F.csv --input-rate 400" ] && [ "$pqcols" = "--columns gx=gx,gy=-gy,gz=gz" ]; then
+    pass "PicoQuake, g_y flipped: the remedy converts with --input-rate 400, then gy=-gy"
+else fail "PicoQuake, g_y flipped: the remedy is '$pqconv', then '$pqcols': $(cat "$T/err")"; fi
+rm -f "$T/F.csv"
+if (cd "$T" && eval "\"\$H\" convert $pqconv") 2>/dev/null &&
+    eval "\"\$H\" replay \"\$T/F.csv\" $pqcols --out \"\$T/pq_flip_out.csv\" --quiet" 2>/dev/null &&
+    cmp -s "$T/pq_ref_out.csv" "$T/pq_flip_out.csv"; then
+    pass "PicoQuake, g_y flipped: the remedy followed as printed gives the walk's trajectory, byte for byte"
+else fail "PicoQuake, g_y flipped: the remedy followed does not give the walk's trajectory"; fi
 
 # refused with the setting to change: an export of increments; a counter
 # without a stated rate names --input-rate
