@@ -97,6 +97,7 @@ struct hx_reader {
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
     int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
+    int kalibr;                 /* csv: Kalibr's IMU CSV header matched (hx_names_kalibr) */
     int gforce;                 /* csv: Physics Toolbox's g-force names matched (hx_names_match) */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
@@ -1150,6 +1151,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
     }
     l->names_matched = 1;
     r->ros = m->ros;
+    r->kalibr = m->kalibr;
     r->gforce = m->gforce;
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
@@ -1166,6 +1168,8 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
         add_warn(r, "%s: header read as %s (%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros      ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them"
+                 : m->kalibr ? "Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the "
+                               "specific force in m/s^2, as Kalibr's bag format sets them"
                  : m->gforce ? "names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force"
                                " in g"
                              : "names matched",
@@ -1958,7 +1962,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         m->has_temp = r->col_temp >= 0;
         copy_str(m->sensor, sizeof m->sensor,
                  r->consensys ? "Shimmer (Consensys export)" : r->ros ? "ROS sensor_msgs/Imu"
-                 : r->gforce  ? "Physics Toolbox (g-force)" : "unknown");
+                 : r->kalibr  ? "Kalibr IMU CSV" : r->gforce ? "Physics Toolbox (g-force)" : "unknown");
         break;
     }
     case HX_FMT_NGIMU: {

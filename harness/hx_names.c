@@ -478,6 +478,18 @@ static size_t lower_bare(const char *name, char *bare, size_t size)
     return i;
 }
 
+/* the row of tab[0..n) whose text is b; -1 none */
+static int row_exact(const char *b, const name_row_t *tab, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++) {
+        if (strcmp(b, tab[k].text) == 0) {
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
 /* the k_consensys row a name ends with (case, quotes and blanks around
  * ignored); -1 none */
 static int consensys_row(const char *name)
@@ -557,18 +569,8 @@ static const name_row_t k_ros[] = {
 static int ros_row(const char *name)
 {
     char bare[128];
-    const char *b = bare;
-    size_t k;
     (void)lower_bare(name, bare, sizeof bare);
-    if (strncmp(bare, "field.", 6) == 0) {
-        b += 6;
-    }
-    for (k = 0; k < sizeof k_ros / sizeof k_ros[0]; k++) {
-        if (strcmp(b, k_ros[k].text) == 0) {
-            return (int)k;
-        }
-    }
-    return -1;
+    return row_exact(bare + (strncmp(bare, "field.", 6) == 0 ? 6 : 0), k_ros, sizeof k_ros / sizeof k_ros[0]);
 }
 
 /* A stamp split in whole seconds and nanoseconds (bagpy's
@@ -642,6 +644,36 @@ int hx_names_ros(char *const *f, int n)
     return acc && gyr;
 }
 
+/* Kalibr's IMU CSV (the bag format kalibr_bagcreater reads, imu0.csv):
+ * the stamp in ns, omega in rad/s, alpha the specific force in m/s^2; a
+ * leading '#' of the header's first name is not part of it. */
+static const name_row_t k_kalibr[] = {
+    { "timestamp", 0, 1, HX_UNIT_NS }, { "timestamp_ns", 0, 1, HX_UNIT_NS }, { "alpha_x", 1, 1, HX_UNIT_NONE },
+    { "alpha_y", 2, 1, HX_UNIT_NONE }, { "alpha_z", 3, 1, HX_UNIT_NONE },    { "omega_x", 4, 1, HX_UNIT_NONE },
+    { "omega_y", 5, 1, HX_UNIT_NONE }, { "omega_z", 6, 1, HX_UNIT_NONE },
+};
+
+/* the k_kalibr row of a name (case, quotes, blanks and a leading '#'
+ * ignored); -1 none */
+static int kalibr_row(const char *name)
+{
+    char bare[64];
+    (void)lower_bare(name, bare, sizeof bare);
+    return row_exact(bare + (bare[0] == '#'), k_kalibr, sizeof k_kalibr / sizeof k_kalibr[0]);
+}
+
+int hx_names_kalibr(char *const *f, int n)
+{
+    int i, seen = 0;
+    for (i = 0; i < n; i++) {
+        const int k = kalibr_row(f[i]);
+        if (k >= 0 && k_kalibr[k].key > 0) {
+            seen |= 1 << k_kalibr[k].key;
+        }
+    }
+    return seen == 0x7e; /* ax..gz: alpha_x..z and omega_x..z all named */
+}
+
 hx_name_unit_t hx_name_unit_of_text(const char *text)
 {
     char folded[64], u[32];
@@ -691,8 +723,11 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         m->ros = 1;
         rank_match(f, n, k_ros, ros_row, m);
         ros_split_stamp(f, n, m);
+    } else if (hx_names_kalibr(f, n)) {
+        m->kalibr = 1;
+        rank_match(f, n, k_kalibr, kalibr_row, m);
     }
-    for (i = 0; i < n && !m->consensys && !m->ros; i++) {
+    for (i = 0; i < n && !m->consensys && !m->ros && !m->kalibr; i++) {
         hx_name_class_t c;
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
         if (kind == HX_NAME_MATCH && c.key == 0 && c.clock == 1) {
@@ -728,7 +763,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             m->ncand[k] = ngf[k];
         }
     }
-    for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros; i++) {
+    for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros && !m->kalibr; i++) {
         /* a key without a candidate that one name has but for its unit:
          * the refusal names the unit (hx_names_unit_problem) */
         hx_name_class_t c;
@@ -746,9 +781,9 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             m->ok = 0;
         }
     }
-    if (m->consensys || m->ros) {
+    if (m->consensys || m->ros || m->kalibr) {
         /* Consensys: the units are the row's under the header (hx_log.c);
-         * ROS: SI, the time's set by ros_match */
+         * ROS and Kalibr: SI, the time's set by rank_match */
         return m->ok;
     }
     if (m->col[0] >= 0) {

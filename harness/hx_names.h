@@ -82,6 +82,14 @@ int hx_names_consensys(char *const *f, int n);
  *  or bagpy's Time in s. */
 int hx_names_ros(char *const *f, int n);
 
+/** Whether a header is Kalibr's IMU CSV (its bag format's imu0.csv,
+ *  "timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z"): it names
+ *  all six of omega_x..z and alpha_x..z (case ignored). Matched from those
+ *  names: omega the rate in rad/s, alpha the specific force in m/s^2 (not
+ *  the angular acceleration the word names elsewhere, so read only beside
+ *  omega), and timestamp (or timestamp_ns) in ns, as Kalibr writes them. */
+int hx_names_kalibr(char *const *f, int n);
+
 /** The column of a ROS topic's receive time among the n header fields f
  *  (%time, in ns, before bagpy's Time, in s), its unit in *unit; -1 when
  *  there is none. */
@@ -115,6 +123,7 @@ typedef struct {
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
     int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */
     int ros;            /**< 1: a ROS sensor_msgs/Imu header (hx_names_ros): SI units, the stamp in ns or s */
+    int kalibr;         /**< 1: Kalibr's IMU CSV header (hx_names_kalibr): SI units, the stamp in ns */
     int gforce;         /**< 1: the accelerations are Physics Toolbox's g-force names (gFx..gFz); the app's
                              other acceleration names (ax..az, its linear acceleration, gravity removed)
                              are then not read, and listed with the near misses */

@@ -3583,6 +3583,18 @@ static void test_names_match(void **state)
           "--columns t=time,ax=gFx,ay=gFy,az=gFz,gx=wx,gy=wy,gz=wz --units accel=g" },
         { "time,gFx,gFy,gFz,gFTotal", 0, { 0, 1, 2, 3, -1, -1, -1 }, { 0, HX_UNIT_G, 0 },
           "--columns t=time,ax=gFx,ay=gFy,az=gFz --units accel=g" },
+        /* Kalibr's IMU CSV: the stamp in ns, alpha the specific force
+         * beside omega; alpha without omega is no name read (elsewhere the
+         * angular acceleration) */
+        { "timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z", 1, { 0, 4, 5, 6, 1, 2, 3 },
+          { HX_UNIT_NS, 0, 0 },
+          "--columns t=timestamp,ax=alpha_x,ay=alpha_y,az=alpha_z,gx=omega_x,gy=omega_y,gz=omega_z --units time=ns" },
+        { "timestamp_ns,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z,frame_idx,t_us", 1, { 0, 4, 5, 6, 1, 2, 3 },
+          { HX_UNIT_NS, 0, 0 },
+          "--columns t=timestamp_ns,ax=alpha_x,ay=alpha_y,az=alpha_z,gx=omega_x,gy=omega_y,gz=omega_z --units "
+          "time=ns" },
+        { "t,alpha_x,alpha_y,alpha_z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
         /* one quantity in two units: no one --units item reads it */
         { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
           "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },

@@ -288,7 +288,9 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # as rostopic echo -p writes it (ros: stamps in ns; before, "header has no
 # column 't'") or bagpy (bagpy: the stamp split in secs and nsecs) or
 # EuRoC's ASL format (euroc: "#timestamp [ns],w_RS_S_x [rad
-# s^-1],..."; before, "the first line is data, not a header"), nor
+# s^-1],..."; before, "the first line is data, not a header") or Kalibr's
+# IMU CSV (kalibr: timestamp in ns, omega_x.., alpha_x..; before, alpha
+# not read and the file refused as a gyroscope's alone), nor
 # AndroSensor's CSV (andro: "Time since start in ms "; before, no time
 # column) or a time named by a clock's name (epochms: "epoch (ms)"; before,
 # no time column), nor Physics Toolbox Sensor Suite's record of several
@@ -302,7 +304,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc andro epochms ptb; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -319,7 +321,7 @@ def onto_x(d):
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
      'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
-     'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3)}.get(sys.argv[3])
+     'kalibr': np.eye(3), 'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -380,6 +382,14 @@ elif sys.argv[3] == 'euroc':
         for ti, ai, gi in zip(d['t'], a, g):
             f.write('%d,' % (int(round(ti * 1e9)) + 1403636579758555392) + ','.join('%.9g' % v for v in list(gi) + list(ai)) +
                     '\r\n')
+elif sys.argv[3] == 'kalibr':
+    # Kalibr's IMU CSV (its bag format's imu0.csv): the stamp in ns, the
+    # rates (omega) first, then the specific force (alpha)
+    with open(sys.argv[2], 'w') as f:
+        f.write('timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            f.write('%d,' % (int(round(ti * 1e9)) + 1385030208736607488) +
+                    ','.join('%.9g' % v for v in list(gi) + list(ai)) + '\n')
 elif sys.argv[3] == 'andro':
     # AndroSensor's CSV: semicolons, upper-case names with their units,
     # gravity and linear acceleration beside the accelerometer (not read),
@@ -452,6 +462,11 @@ expect_exit 0 "info on the ptb variant" "$H" info "$T/m_ptb.csv"
 expect_err "m_ptb.csv: header read as --columns t=time,ax=gFx,ay=gFy,az=gFz,gx=wx,gy=wy,gz=wz --units accel=g (names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force in g; not read: ax, ay, az; give --columns to choose otherwise)$" \
     "ptb: the warning says the g-force is read in g and ax..az are not read"
 expect_out "^sensor      Physics Toolbox (g-force)$" "ptb: info names the app"
+# the kalibr variant: the warning names Kalibr's units; info names the format
+expect_exit 0 "info on the kalibr variant" "$H" info "$T/m_kalibr.csv"
+expect_err "m_kalibr.csv: header read as --columns t=timestamp,ax=alpha_x,ay=alpha_y,az=alpha_z,gx=omega_x,gy=omega_y,gz=omega_z --units time=ns (Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the specific force in m/s^2, as Kalibr's bag format sets them; give --columns to choose otherwise)$" \
+    "kalibr: the warning says how the names are read"
+expect_out "^sensor      Kalibr IMU CSV$" "kalibr: info names the format"
 
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
 # record it (flat tops at full scale). replay does not navigate it without a

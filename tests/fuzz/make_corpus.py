@@ -193,6 +193,10 @@ def main():
         b'#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],'
         b'a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\r\n1403636579758555392,-0.0991,0.1424,0.0628,8.1334,-0.6456,-2.7136\r\n'
         b'1403636579763555584,-0.0991,0.1431,0.0628,8.1334,-0.6456,-2.7136\r\n')
+    # Kalibr's IMU CSV: the stamp in ns, omega (rad/s) then alpha (m/s^2)
+    put('log_reader', 'csv_kalibr', bytes([FMT['auto']]) +
+        b'timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z\n1385030208736607488,0.5,-0.2,-0.1,8.1,-1.9,-3.3\n'
+        b'1385030208741607488,0.5,-0.1,-0.1,8.1,-1.9,-3.3\n')
     # a phone export for --columns (fuzz_log_reader.c: the map and the units
     # by the input's size): zeros after the last value make the size 7 mod
     # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
