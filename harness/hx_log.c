@@ -1341,9 +1341,10 @@ static int read_again_from(hx_reader_t *r, z_off_t pos, long lines)
  * sample count from "# Config: data_rate = 2000.0 Hz, filter = ..." (the
  * writer's Config, with "Hz" or without as PLab's versions differ) into
  * *fs_hz (0: no such line) and its line; the reader then stands before the
- * header. A data_rate of 2 without "Hz" is 12.5 Hz: the device has no
- * 2 Hz setting, and a version of PLab's library writes 2 for its 12.5 Hz
- * (DataRate.hz_12_5 = 1, 2); said in a warning. A second Config line is
+ * header. A data_rate of 2 without "Hz" is no rate of the device: a
+ * version of PLab's library writes 2 for its 12.5 Hz setting
+ * (DataRate.hz_12_5 = 1, 2), whose index 1 is also its 25 Hz's; refused,
+ * or with --input-rate warned about. A second Config line is
  * not read (a warning). A data_rate that is no rate in Hz is refused, or
  * with --input-rate (rate_hz > 0) warned about. 0 ok, -1 error (err set). */
 static int pq_preamble(hx_reader_t *r, double rate_hz, double *fs_hz, long *line)
@@ -1370,7 +1371,7 @@ static int pq_preamble(hx_reader_t *r, double rate_hz, double *fs_hz, long *line
             continue;
         }
         if (*line > 0) {
-            add_warn(r, "%s:%ld: a second '# Config:' line, not read (the data_rate of line %ld is)", r->path,
+            add_warn(r, "%s:%ld: a second '# Config:' line, not read (the first, line %ld, is the file's)", r->path,
                      r->stats.lines, *line);
             continue;
         }
@@ -1403,12 +1404,17 @@ static int pq_preamble(hx_reader_t *r, double rate_hz, double *fs_hz, long *line
             return -1;
         }
         if (fs == 2.0 && !hz) {
-            fs = 12.5;
-            if (!(rate_hz > 0.0)) {
-                add_warn(r, "%s:%ld: data_rate = 2 read as 12.5 Hz: PicoQuake has no 2 Hz setting, and a version of "
-                            "PLab's library writes 2 for 12.5 Hz (give --input-rate if the rate was another)",
-                         r->path, r->stats.lines);
+            /* no rate of the device: not guessed */
+            if (rate_hz > 0.0) {
+                add_warn(r, "%s:%ld: data_rate = 2 is no PicoQuake rate; --input-rate %g Hz is read", r->path,
+                         r->stats.lines, rate_hz);
+                *line = r->stats.lines;
+                continue;
             }
+            set_err(r, "%s:%ld: data_rate = 2 is no PicoQuake rate: a version of PLab's library writes 2 for its "
+                       "12.5 Hz setting, whose index its firmware reads as 25 Hz; give the rate with --input-rate",
+                    r->path, r->stats.lines);
+            return -1;
         }
         *fs_hz = fs;
         *line = r->stats.lines;
@@ -2101,7 +2107,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         if (!(fs > 0.0) && !(rate_hz > 0.0)) {
             set_err(r, "%s: no '# Config: data_rate = N' line before the header: the sample count's rate is not "
                        "known (give --input-rate; the header count,a_x,...,g_z is read as PLab PicoQuake's, in g and "
-                       "deg/s: for another layout give --from csv with --columns and --units)", r->path);
+                       "deg/s: for another layout give --from csv with --columns, --units and --input-rate)",
+                    r->path);
             return -1;
         }
         /* the device's units (its docs, "Acquisition CSV File"): g and deg/s */

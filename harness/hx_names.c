@@ -840,6 +840,9 @@ static void cat(char *buf, size_t size, const char *text)
 
 int hx_names_need_quotes(const char *s)
 {
+    if (*s == '~' || *s == '=') {
+        return 1; /* expanded at a word's start (a home; zsh's =command) */
+    }
     for (; *s != '\0'; s++) {
         /* a name with a blank or a bracket is one shell word only quoted */
         if (!(isalnum((unsigned char)*s) || strchr("_.,=/-+", *s) != NULL)) {

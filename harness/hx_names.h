@@ -147,7 +147,7 @@ const char *hx_name_unit_item(hx_name_unit_t u);
  *  named; "" when nothing matched. Returns buf. */
 const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
 /** 1 when s is one shell word only quoted (a name with a blank, a bracket
- *  or another character outside [A-Za-z0-9_.,=/+-]). */
+ *  or another character outside [A-Za-z0-9_.,=/+-], or a '~' or '=' first). */
 int hx_names_need_quotes(const char *s);
 /** s as one shell word into buf: as it is when nothing in it needs quoting,
  *  else in single quotes, a ' in s dropped when names (a --columns map: a

@@ -1625,13 +1625,25 @@ static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt, hx_format_
             len += (size_t)snprintf(opts + len, sizeof opts - len, " --from %s", hx_format_name(given_fmt));
         }
         if (in_rate > 0.0 && len < sizeof opts) {
-            len += (size_t)snprintf(opts + len, sizeof opts - len, " --input-rate %.17g", in_rate);
+            /* the shortest of %.15g and %.17g that reads back the rate */
+            char num[40];
+            snprintf(num, sizeof num, "%.15g", in_rate);
+            if (strtod(num, NULL) != in_rate) {
+                snprintf(num, sizeof num, "%.17g", in_rate);
+            }
+            len += (size_t)snprintf(opts + len, sizeof opts - len, " --input-rate %s", num);
         }
         if (l != NULL && len < sizeof opts && strncmp(hx_units_give(l, units, sizeof units), "give ", 5) == 0) {
             (void)snprintf(opts + len, sizeof opts - len, " %s", units + 5);
         }
-        ok = hx_columns_give(&def, src, neg, give, sizeof give) != NULL &&
-             hx_shell_word(path, 0, word, sizeof word)[0] != '\0' &&
+        {
+            /* a path that begins with '-' would be read as an option */
+            char rel[1100];
+            const int dash = path[0] == '-';
+            ok = snprintf(rel, sizeof rel, "%s%s", dash ? "./" : "", path) < (int)sizeof rel &&
+                 hx_shell_word(rel, 0, word, sizeof word)[0] != '\0';
+        }
+        ok = ok && hx_columns_give(&def, src, neg, give, sizeof give) != NULL &&
              snprintf(text, sizeof text,
                       "; this log so read: bin/harness convert %s F.csv%s (the %s%s to the interchange CSV), then "
                       "F.csv with %s", word, opts,

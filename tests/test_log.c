@@ -2623,8 +2623,9 @@ static void test_ipol_counter_wrap(void **state)
  * warning; the header alone (the preamble cut off) is known but needs
  * --input-rate; a data_rate that is no rate is refused at its line, or
  * with --input-rate warned about; "data_rate = 2" (PLab's library's
- * 12.5 Hz) is 12.5 Hz with a warning, "2 Hz" is 2 Hz; a second Config
- * line is not read, with a warning. */
+ * 12.5 Hz setting, sampled at 25 Hz by its firmware) is refused, or with
+ * --input-rate warned about, "2 Hz" is 2 Hz; a second Config line is not
+ * read, with a warning. */
 static void test_picoquake(void **state)
 {
     static const char *const pre = "# PLab PicoQuake Data\n"
@@ -2652,13 +2653,14 @@ static void test_picoquake(void **state)
         { "# Config: data_rate = 500 kHz, filter = 42\n", 0.0, 0.0, 0, ":4: expected '# Config: data_rate", NULL },
         { "# Config: data_rate = fast, filter = 42\n", 250.0, 250.0, 1, NULL,
           ":4: the data_rate of '# Config:' is no rate in Hz; --input-rate 250 Hz is read" },
-        { "# Config: data_rate = 2, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 12.5, 1, NULL,
-          ":4: data_rate = 2 read as 12.5 Hz: PicoQuake has no 2 Hz setting" },
+        { "# Config: data_rate = 2, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 0.0, 0,
+          ":4: data_rate = 2 is no PicoQuake rate: a version of PLab's library writes 2 for its 12.5 Hz setting, "
+          "whose index its firmware reads as 25 Hz; give the rate with --input-rate", NULL },
         { "# Config: data_rate = 2 Hz, filter = 42 Hz\n", 0.0, 2.0, 1, NULL, NULL },
-        { "# Config: data_rate = 2, filter = 42\n", 100.0, 100.0, 1, NULL,
-          "--input-rate 100 Hz replaces the rate the file states (12.5 Hz on line 4)" },
+        { "# Config: data_rate = 2, filter = 42\n", 25.0, 25.0, 1, NULL,
+          ":4: data_rate = 2 is no PicoQuake rate; --input-rate 25 Hz is read" },
         { "# Config: data_rate = 500.0 Hz, filter = 42 Hz\n# Config: data_rate = 100.0 Hz, filter = 42 Hz\n", 0.0,
-          500.0, 1, NULL, ":5: a second '# Config:' line, not read (the data_rate of line 4 is)" },
+          500.0, 1, NULL, ":5: a second '# Config:' line, not read (the first, line 4, is the file's)" },
     };
     char p[256], err[320], text[1024];
     hx_log_t log;
@@ -2689,7 +2691,11 @@ static void test_picoquake(void **state)
         assert_true(fabs(log.gyr[0][0] - 90.0 * HX_DPS_RPS) <= 6e-8 * 90.0 * HX_DPS_RPS);
         assert_true(fabs(log.gyr[0][1] + 45.0 * HX_DPS_RPS) <= 6e-8 * 45.0 * HX_DPS_RPS);
         if (k[i].warn != NULL) {
+            /* that warning, and no other of the rate's */
             assert_non_null(strstr(log.warnings, k[i].warn));
+            assert_true(strstr(k[i].warn, "replaces") != NULL || strstr(log.warnings, "replaces") == NULL);
+            assert_true(strstr(k[i].warn, "is read") != NULL || strstr(log.warnings, "is read") == NULL);
+            assert_true(strstr(k[i].warn, "second") != NULL || strstr(log.warnings, "second") == NULL);
         } else {
             assert_null(strstr(log.warnings, "replaces"));
             assert_null(strstr(log.warnings, "Config"));
@@ -2703,7 +2709,7 @@ static void test_picoquake(void **state)
     assert_int_equal(hx_detect_file(p), HX_FMT_PICOQUAKE);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, "(give --input-rate; the header count,a_x,...,g_z is read as PLab PicoQuake's, in g "
-                                "and deg/s: for another layout give --from csv with --columns and --units)"));
+                                "and deg/s: for another layout give --from csv with --columns, --units and --input-rate)"));
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 500.0, err, sizeof err), 0);
     assert_int_equal(log.n, 4);
     hx_log_free(&log);
@@ -3823,6 +3829,9 @@ static void test_shell_word(void **state)
     assert_string_equal(hx_shell_word("t=Time [s],ax=Acc'X", 1, buf, sizeof buf), "'t=Time [s],ax=AccX'");
     assert_string_equal(hx_shell_word("", 0, buf, sizeof buf), "''");
     assert_string_equal(hx_shell_word("a*b", 0, buf, sizeof buf), "'a*b'");
+    assert_string_equal(hx_shell_word("~x.bin", 0, buf, sizeof buf), "'~x.bin'");
+    assert_string_equal(hx_shell_word("=x.bin", 0, buf, sizeof buf), "'=x.bin'");
+    assert_string_equal(hx_shell_word("x=~y", 0, buf, sizeof buf), "'x=~y'");
     /* fits exactly: 'a b' is 5 characters and the NUL */
     assert_string_equal(hx_shell_word("a b", 0, buf, 6), "'a b'");
     assert_string_equal(hx_shell_word("a b", 0, buf, 5), "");

@@ -646,6 +646,13 @@ if [ -n "$axconv" ] && (cd "$T" && eval "\"\$H\" convert $axconv") 2>/dev/null &
     cmp -s "$T/ax_q_traj.csv" "$T/m_ref.csv"; then
     pass "axes check: the quoted path's remedy followed as printed: the walk's trajectory, byte for byte"
 else fail "axes check: the quoted path's remedy ('$axconv', '$axcols') did not give the walk's trajectory"; fi
+# a relative path that begins with '-': convert is given ./-PATH, not an option
+cp "$T/ax_flip.bin" "$T/-flip.bin"
+(cd "$T" && "$H" replay --quiet -- -flip.bin) >/dev/null 2>"$T/err"
+if grep -qF -- "this log so read: bin/harness convert ./-flip.bin F.csv (the bin format" "$T/err" &&
+    (cd "$T" && rm -f F.csv && "$H" convert ./-flip.bin F.csv) >/dev/null 2>&1 && [ -s "$T/F.csv" ]; then
+    pass "axes check: a path that begins with '-' is given as ./-flip.bin, and convert reads it"
+else fail "axes check: a path that begins with '-': $(cat "$T/err")"; fi
 # names given with a ' in them: the printed map drops it inside its quotes
 # (names match without their quotes) and reads the log as the map found
 sed "1s/Acc/Acc'/g; 1s/Gyro/Gyro'/g" "$T/ax_named.csv" >"$T/ax_quote.csv"

@@ -164,8 +164,8 @@ def main():
           b'1,0.96,0.41,0.53,19.71,123.73,93.19\n2,0.72,0.51,0.53,14.6,105.12,77.13\n4,0.77,0.5,0.52,13.9,99.1,70.2\n')
     put('log_reader', 'picoquake_auto', bytes([FMT['auto']]) + pq)
     put('log_reader', 'picoquake_forced', bytes([FMT['picoquake'] | 0x80]) + pq)
-    # data_rate = 2 (PLab's library's 12.5 Hz) and a second Config line
-    # (warned about); a data_rate that is no rate, read whole with an
+    # data_rate = 2 (PLab's library's 12.5 Hz setting: refused) and a second Config line
+    # (not read); a data_rate that is no rate, read whole with an
     # --input-rate (0x20: 123 Hz) that replaces it
     put('log_reader', 'picoquake_rate2_twice', bytes([FMT['auto']]) +
         pq.replace(b'data_rate = 2000.0 Hz', b'data_rate = 2').replace(
