@@ -1165,7 +1165,11 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
          * message's own stamp (%time, bagpy's Time) */
         hx_name_unit_t ru;
         const int receive = m->ros && m->col[0] >= 0 && m->col[0] == hx_names_ros_receive(f, n, &ru);
-        add_warn(r, "%s: header read as %s (%s%s%s%s; give --columns to choose otherwise)", r->path,
+        char times[96] = "";
+        if (m->times > 1) {
+            snprintf(times, sizeof times, "; of %d time names, the first that names its unit read", m->times);
+        }
+        add_warn(r, "%s: header read as %s (%s%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros      ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them"
                  : m->kalibr ? "Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the "
@@ -1173,7 +1177,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
                  : m->gforce ? "names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force"
                                " in g"
                              : "names matched",
-                 receive ? "; the time is the bag's receive time, the message's stamp not found" : "",
+                 receive ? "; the time is the bag's receive time, the message's stamp not found" : "", times,
                  near[0] != '\0' ? "; not read: " : "", near);
     }
 }

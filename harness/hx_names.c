@@ -701,7 +701,7 @@ hx_name_unit_t hx_name_unit_of_text(const char *text)
 
 int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
-    int i, k, nclock = 0, clock[3], ngf[4] = { 0, 0, 0, 0 }, gf[4][3] = { { 0 } };
+    int i, k, nclock = 0, clocks = 0, clock[3], ngf[4] = { 0, 0, 0, 0 }, gf[4][3] = { { 0 } };
     memset(m, 0, sizeof *m);
     m->unit_col = -1;
     m->col_tns = -1;
@@ -747,6 +747,40 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->ncand[0], m->cand[0], clock[k]);
         }
         m->ncand[0] = nclock;
+        clocks = nclock > 0;
+    }
+    if (m->ncand[0] > 1 && !m->consensys && !m->ros && !m->kalibr) {
+        /* several time names ("Timestamp (ms)" and AndroSensor's "Time
+         * since start in ms"): each is a clock of the samples, and one
+         * is as good as another for their intervals, so the first that
+         * names its unit is read rather than the header refused; the
+         * others are named in the warning as not read. Where none names
+         * its unit ("time,timestamp": s, ms or ns, a date and time?), the
+         * header is refused with the candidates, as before
+         * (docs/log-format.md, "Names read without --columns"). The
+         * candidates are the clocks' names only where no other is. */
+        int best = -1, pass;
+        for (pass = 0; pass < 2; pass++) {
+            for (i = 0; i < n; i++) {
+                hx_name_class_t c;
+                if (hx_name_classify(f[i], &c) != HX_NAME_MATCH || c.key != 0 || (c.clock == 1) != clocks) {
+                    continue;
+                }
+                if (pass == 0 && best < 0 && c.unit != HX_UNIT_NONE) {
+                    best = i;
+                } else if (pass == 1 && i != best) {
+                    add_col(&m->nnear[0], m->near[0], i);
+                }
+            }
+            if (best < 0) {
+                break;
+            }
+        }
+        if (best >= 0) {
+            m->times = m->ncand[0];
+            m->cand[0][0] = best;
+            m->ncand[0] = 1;
+        }
     }
     if (ngf[1] + ngf[2] + ngf[3] > 0) {
         /* Physics Toolbox's g-force is the specific force; the app's

@@ -3562,6 +3562,15 @@ static void test_names_match(void **state)
           "--columns t=t,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
         { "time,timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
           "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* time names that name their units: the first that does is read
+         * (one clock of the samples is as good as another), the others
+         * are near misses; none naming its unit (above): refused */
+        { "Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz", 1, { 0, 2, 3, 4, 5, 6, 7 },
+          { HX_UNIT_MS, 0, 0 }, "--columns 't=Timestamp (ms),ax=ax,ay=ay,az=az,gx=gx,gy=gy,gz=gz' --units time=ms" },
+        { "time,Time (s),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 1, 2, 3, 4, 5, 6, 7 }, { HX_UNIT_S, 0, 0 },
+          "--columns 't=Time (s),ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z' --units time=s" },
+        { "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,time_us,elapsed (s)", 1, { 6, 0, 1, 2, 3, 4, 5 }, { HX_UNIT_US, 0, 0 },
+          "--columns t=time_us,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z --units time=us" },
         /* a clock's name is the time where no other time name is; beside
          * one, the other is read (as before the clock's names were read) */
         { "epoch (ms),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { HX_UNIT_MS, 0, 0 },
@@ -3642,6 +3651,23 @@ static void test_names_match(void **state)
         assert_int_equal(hx_names_match(f, n, &m), 0);
         assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
                             "ax: 2 candidates (acc_x, accel_x); az: none (near misses: FreeAcc_Z)");
+        /* the time names not read beside the one read: counted, named */
+        snprintf(text, sizeof text, "Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.times, 2);
+        assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "Time since start in ms");
+        snprintf(text, sizeof text, "t,time (ms),timestamp (us),elapsed (s),time_ns,ax,ay,az,gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.times, 5);
+        assert_int_equal(m.col[0], 1);
+        assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "t, timestamp (us), elapsed (s), ...");
+        snprintf(text, sizeof text, "time,timestamp,ax,ay,az,gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.times, 0);
+        assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss), "t: 2 candidates (time, timestamp)");
         /* Physics Toolbox's ax..az beside its g-force: named as not read */
         snprintf(text, sizeof text, "time,gFx,gFy,gFz,ax,ay,az,wx,wy,wz");
         n = split_header(text, f, 16);

@@ -295,7 +295,10 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # column) or a time named by a clock's name (epochms: "epoch (ms)"; before,
 # no time column), nor Physics Toolbox Sensor Suite's record of several
 # sensors (ptb: the g-force gFx in g beside the app's linear acceleration
-# ax, gravity removed; before, ax read as the specific force).
+# ax, gravity removed; before, ax read as the specific force), nor two time
+# names that name their units (twotime: "Timestamp (ms)" in Unix ms with
+# the ns as decimals, read, and "Time since start in ms" in whole ms, not
+# read; before, refused with both named as candidates).
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -304,7 +307,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb twotime; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -321,7 +324,8 @@ def onto_x(d):
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
      'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
-     'kalibr': np.eye(3), 'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3)}.get(sys.argv[3])
+     'kalibr': np.eye(3), 'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3),
+     'twotime': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -420,6 +424,14 @@ elif sys.argv[3] == 'ptb':
         for ti, ai, gi in zip(d['t'], a, g):
             f.write('%.9f,' % ti + ','.join('%.9g' % v for v in list(ai / 9.80665) + list(ai - [0, 0, 9.8]) + list(gi)) +
                     ',1013.25,12.5,-3.1,40.2\n')
+elif sys.argv[3] == 'twotime':
+    # two clocks of the samples, each naming its unit: the first is read
+    with open(sys.argv[2], 'w') as f:
+        f.write('Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9)) + 1700000000 * 10**9
+            f.write('%d.%06d,%d,' % (ns // 10**6, ns % 10**6, int(round(ti * 1e3))) +
+                    ','.join('%.9g' % v for v in list(ai) + list(gi)) + '\n')
 else:
     np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
                fmt=['%.7f'] + ['%.9g'] * 6)
@@ -467,6 +479,14 @@ expect_exit 0 "info on the kalibr variant" "$H" info "$T/m_kalibr.csv"
 expect_err "m_kalibr.csv: header read as --columns t=timestamp,ax=alpha_x,ay=alpha_y,az=alpha_z,gx=omega_x,gy=omega_y,gz=omega_z --units time=ns (Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the specific force in m/s^2, as Kalibr's bag format sets them; give --columns to choose otherwise)$" \
     "kalibr: the warning says how the names are read"
 expect_out "^sensor      Kalibr IMU CSV$" "kalibr: info names the format"
+# the twotime variant: the warning says which time name is read and names
+# the other as not read
+expect_exit 0 "info on the twotime variant" "$H" info "$T/m_twotime.csv"
+expect_err "m_twotime.csv: header read as --columns 't=Timestamp (ms),ax=ax,ay=ay,az=az,gx=gx,gy=gy,gz=gz' --units time=ms (names matched; of 2 time names, the first that names its unit read; not read: Time since start in ms; give --columns to choose otherwise)$" \
+    "twotime: the warning names the time read and the one not read"
+# the other, chosen by --columns as the warning says: read too (whole ms)
+expect_exit 0 "the twotime variant with the other time name" "$H" replay "$T/m_twotime.csv" \
+    --columns "t=Time since start in ms,ax=ax,ay=ay,az=az,gx=gx,gy=gy,gz=gz" --units time=ms --quiet
 
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
 # record it (flat tops at full scale). replay does not navigate it without a

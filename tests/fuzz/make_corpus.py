@@ -197,6 +197,10 @@ def main():
     put('log_reader', 'csv_kalibr', bytes([FMT['auto']]) +
         b'timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z\n1385030208736607488,0.5,-0.2,-0.1,8.1,-1.9,-3.3\n'
         b'1385030208741607488,0.5,-0.1,-0.1,8.1,-1.9,-3.3\n')
+    # several time names, the first naming its unit read (hx_names_match)
+    put('log_reader', 'csv_two_times', bytes([FMT['auto']]) +
+        b'Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz\n1700000000000.5,0,0.1,0.2,9.8,0,0,0\n'
+        b'1700000000010.5,10,0.1,0.2,9.8,0,0,0\n')
     # a phone export for --columns (fuzz_log_reader.c: the map and the units
     # by the input's size): zeros after the last value make the size 7 mod
     # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
