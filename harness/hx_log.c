@@ -3068,6 +3068,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
          * walk as 100 Hz); ignored without a word, a time-stamped text log
          * would not say so */
         add_warn(r, "%s: --input-rate ignored: the %s format has time stamps", path, hx_format_name(fmt));
+        r->meta.rate_ignored = 1;
     }
     return r;
 }

@@ -46,6 +46,7 @@ typedef struct {
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
     int stamps_made;        /**< 1: the format has no time stamps; they are the line index / rate */
+    int rate_ignored;       /**< 1: --input-rate was given and ignored (the format has time stamps) */
     char sensor[32];        /**< sensor name, e.g. "x-io NGIMU" */
     char source[60];        /**< where the data came from (file or description) */
     char axes[48];          /**< axis note, e.g. "z up at rest" */

@@ -1669,6 +1669,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     hx_log_t raw, res;
     fnav_status_t st;
     hx_format_t in_fmt; /* the format read: the units check's remedy */
+    double remedy_rate = in_rate; /* the axes remedy's --input-rate: not one the reader ignored */
     size_t span_n = 0;  /* the input's samples and their first and last stamps (the units check's span; */
     int64_t span_t0 = 0, span_t1 = 0; /* with --rate the input's, not the resampled grid's) */
     int rc = 0;
@@ -1691,6 +1692,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
          * dropped here */
         hx_print_warnings(cmd, raw.warnings);
         in_fmt = raw.meta.format;
+        remedy_rate = raw.meta.rate_ignored ? 0.0 : in_rate;
         if (traj != NULL) {
             traj->in_format = in_fmt;
         }
@@ -1734,6 +1736,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             return -1;
         }
         in_fmt = hx_reader_meta(r)->format;
+        remedy_rate = hx_reader_meta(r)->rate_ignored ? 0.0 : in_rate;
         if (traj != NULL) {
             traj->in_format = in_fmt;
         }
@@ -1859,8 +1862,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->events = pc.ev != NULL && !pc.ev_bad;
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
-            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, fmt, in_rate,
-                                path);
+            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, fmt,
+                                remedy_rate, path);
         } else {
             snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: not asked for");
         }

@@ -651,6 +651,12 @@ expect_exit 0 "the remedy's --columns" "$H" replay "$T/ax_flip_conv.csv" --colum
     --out "$T/ax_flip_conv_traj.csv" --quiet
 if cmp -s "$T/ax_flip_conv_traj.csv" "$T/m_ref.csv"; then pass "the .bin's remedy followed: the walk's trajectory, byte for byte"
 else fail "the .bin's remedy followed: the trajectory differs from the walk's"; fi
+# --input-rate given to a format with stamps is ignored (a warning): the
+# remedy's convert does not carry it (convert would warn it ignored too)
+expect_exit 0 "axes check: the flipped .bin with --input-rate" "$H" replay "$T/ax_flip.bin" --quiet --input-rate 100
+expect_err "ax_flip.bin: --input-rate ignored: the bin format has time stamps" "--input-rate on a .bin: ignored, with a warning"
+expect_err "this log so read: bin/harness convert $T/ax_flip.bin F.csv (the bin format to the interchange CSV), then F.csv with --columns gx=gx,gy=-gy,gz=gz; outputs" \
+    "axes check: an ignored --input-rate is not in the remedy"
 # a path with a blank and a ' is printed as one shell word; the remedy
 # followed as printed (convert run from the text of the warning, F.csv in $T)
 cp "$T/ax_flip.bin" "$T/a walk's.bin"
