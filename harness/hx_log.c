@@ -252,20 +252,18 @@ static char *trim(char *s)
     return s;
 }
 
-/* Whether the 10 characters at s are a date, YYYY-MM-DD or YYYY/MM/DD,
- * and the text at next starts with a clock time, h:mm or hh:mm: a date and
+/* Whether the len characters at s are a date, YYYY-MM-DD or YYYY/MM/DD
+ * (the month and the day in one digit or two: WitMotion's 2023-3-21), and
+ * the text at next starts with a clock time, h:mm or hh:mm: a date and
  * time that blanks would split in two. */
-static int date_then_time(const char *s, const char *next)
+static int date_then_time(const char *s, size_t len, const char *next)
 {
-    size_t i;
     const size_t h = next[0] != '\0' && isdigit((unsigned char)next[1]) ? 2 : 1;
-    if ((s[4] != '-' && s[4] != '/') || s[7] != s[4]) {
+    const size_t m = strspn(s + 5, "0123456789");
+    const size_t d = m < len ? strspn(s + 6 + m, "0123456789") : 0;
+    if (len < 8 || strspn(s, "0123456789") != 4 || (s[4] != '-' && s[4] != '/') || m < 1 || m > 2 ||
+        s[5 + m] != s[4] || d < 1 || d > 2 || 6 + m + d != len) {
         return 0;
-    }
-    for (i = 0; i < 10; i++) {
-        if (i != 4 && i != 7 && !isdigit((unsigned char)s[i])) {
-            return 0;
-        }
     }
     return isdigit((unsigned char)next[0]) && next[h] == ':' && isdigit((unsigned char)next[h + 1]) &&
            isdigit((unsigned char)next[h + 2]);
@@ -293,12 +291,12 @@ static int split(char *line, char delim, char **f, int max)
                 while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
                     p++;
                 }
-                if (*p == '\0' || p - f[n - 1] != 10) {
+                if (*p == '\0' || p - f[n - 1] < 8 || p - f[n - 1] > 10) {
                     break; /* no date's length: nothing more to look at (every other field of a row) */
                 }
                 for (q = p; *q == ' ' || *q == '\t'; q++) {
                 }
-                if (!date_then_time(f[n - 1], q)) {
+                if (!date_then_time(f[n - 1], (size_t)(p - f[n - 1]), q)) {
                     break;
                 }
                 *p = ' '; /* the date's blanks as one: the time follows in the same field */
@@ -454,6 +452,12 @@ static int take_digits(const char **p, int n)
     return v;
 }
 
+/* one or two digits at *p as a number (-1 if none); *p moves past them */
+static int take_digits12(const char **p)
+{
+    return take_digits(p, isdigit((unsigned char)(*p)[0]) && isdigit((unsigned char)(*p)[1]) ? 2 : 1);
+}
+
 /* Days from 1970-01-01 to a proleptic Gregorian date (the civil-from-days
  * inverse of H. Hinnant's "chrono-compatible low-level date algorithms"). */
 static int64_t days_from_civil(int y, int m, int d)
@@ -469,7 +473,10 @@ static int64_t days_from_civil(int y, int m, int d)
 /* A date and time as loggers write them (ISO 8601 and its common
  * relatives): "YYYY-MM-DD hh:mm:ss[.f]" with 'T' or a blank between date
  * and time, '/' allowed for '-' (year first only: 05/01/2024 is ambiguous),
- * an optional zone ("Z", "+hh:mm", "+hhmm", "+hh"), or a clock time alone
+ * the month, the day and the hour after a date in one digit or two
+ * (WitMotion's "2023-3-21 9:05:23.334"), the time's ':' written '.' after
+ * a date and 'T' (MetaWear MetaBase's "2019-12-22T07.33.20.000"), an
+ * optional zone ("Z", "+hh:mm", "+hhmm", "+hh"), or a clock time alone
  * ("hh:mm:ss[.f]", seconds since midnight). To integer ns since
  * 1970-01-01T00:00:00Z (the clock alone: since midnight), the fraction
  * rounded to the ns. 0 ok; 1 not of this shape (a number, say); -4 of
@@ -482,17 +489,18 @@ static int parse_datetime_ns(const char *s, int64_t *out)
     const char *p = s;
     int64_t days = 0, sec, ns = 0;
     int y, mo, d, hh, mi, ss, n = 0, up = 0, dated = 0;
+    char tsep = ':'; /* the time's separator: '.' after a date and 'T' (MetaBase) */
     if (isdigit((unsigned char)s[0]) && isdigit((unsigned char)s[1]) && s[2] == ':') {
         /* a clock time alone */
     } else if (strspn(s, "0123456789") == 4 && (s[4] == '-' || s[4] == '/')) {
         const char sep = s[4];
         y = take_digits(&p, 4);
         p++;
-        mo = take_digits(&p, 2);
+        mo = take_digits12(&p);
         if (mo < 0 || *p++ != sep) {
             return -4;
         }
-        d = take_digits(&p, 2);
+        d = take_digits12(&p);
         if (y < 1900 || y > 2100) {
             return -5; /* the reader's 2^62 ns (146 years) about 1970 */
         }
@@ -505,16 +513,19 @@ static int parse_datetime_ns(const char *s, int64_t *out)
         if (*p != 'T' && *p != 't' && *p != ' ') {
             return -4;
         }
-        p++;
+        tsep = *p++ != ' ' && p[strspn(p, "0123456789")] == '.' ? '.' : ':';
+        hh = take_digits12(&p);
     } else {
         return 1;
     }
-    hh = take_digits(&p, 2);
-    if (hh < 0 || *p++ != ':') {
+    if (!dated) {
+        hh = take_digits(&p, 2);
+    }
+    if (hh < 0 || *p++ != tsep) {
         return -4;
     }
     mi = take_digits(&p, 2);
-    if (mi < 0 || *p++ != ':') {
+    if (mi < 0 || *p++ != tsep) {
         return -4;
     }
     ss = take_digits(&p, 2);
@@ -642,6 +653,12 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
 int hx_parse_time_ns(const char *s, int digits, int64_t *out)
 {
     return parse_time_ns(s, digits, out);
+}
+
+int hx_is_datetime(const char *s)
+{
+    int64_t ns;
+    return parse_datetime_ns(s, &ns) == 0;
 }
 
 /* Seconds to ns with a range check (|t| < 9.2e9 s keeps int64 ns exact enough). */

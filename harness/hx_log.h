@@ -83,6 +83,10 @@ int hx_split_fields(char *line, char delim, char **f, int max);
  *  0 ok; -1 not a number, -2 NaN or out of range, -3 beyond int64 ns,
  *  -4/-5 a date and time that is none. */
 int hx_parse_time_ns(const char *s, int digits, int64_t *out);
+/** 1 when s reads as a date and time, or a clock time alone, as
+ *  hx_parse_time_ns reads them ("2024-05-01 12:00:00.5", MetaBase's
+ *  "2019-12-22T07.33.20.000", "23:59:59"); 0 otherwise (a number). */
+int hx_is_datetime(const char *s);
 /** The first of the n header fields f that is name (hx_name_eq); -1 when
  *  none is. */
 int hx_find_col(char **f, int n, const char *name);

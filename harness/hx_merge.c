@@ -146,6 +146,13 @@ static int field_value(const char *s, char delim, double *v)
     return field_text(s, delim, buf, sizeof buf) == 0 && hx_parse_number(buf, v) == 0 && isfinite(*v) ? 0 : -1;
 }
 
+/* Whether a time field is a date and time, or a clock time alone. */
+static int field_dated(const char *s, char delim)
+{
+    char buf[64];
+    return field_text(s, delim, buf, sizeof buf) == 0 && hx_is_datetime(buf);
+}
+
 /* A time field as ns in the unit of 10^digits ns (hx_parse_time_ns: exact
  * for plain decimals, dates and times read as such); its return. */
 static int field_time(const char *s, char delim, int digits, int64_t *ns)
@@ -188,7 +195,7 @@ static int blank_line(const char *s)
 typedef struct {
     int t, ax[3];
     int t_elapsed; /* the time column's name is one from a start (elapsed) */
-    int t_dated;   /* the time column's first value is a date and time, or a clock time (a ':') */
+    int t_dated;   /* the time column's first value is a date and time, or a clock time (hx_is_datetime) */
     hx_name_unit_t t_unit, unit;
 } cols_t;
 
@@ -311,20 +318,21 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     for (i = 0, best = -1; i < ntimes; i++) {
         hx_name_class_t cl;
         int64_t ns;
-        int rank;
+        int rank, dated;
         const int rc = times[i] < nd ? field_time(d[times[i]], delim, 9, &ns) : -1;
         if (rc != 0 && rc != -3) { /* -3: a number beyond int64 in seconds, as ns since the epoch is */
             continue;
         }
         (void)hx_name_classify(f[times[i]], &cl);
-        /* a date and time, or a clock time alone, has a ':'; no number has */
-        rank = cl.clock == 1 ? 3 : strchr(d[times[i]], ':') != NULL ? 2 : cl.unit != HX_UNIT_NONE ? 1 : 0;
+        /* a date and time, or a clock time alone (MetaBase's in dots) */
+        dated = field_dated(d[times[i]], delim);
+        rank = cl.clock == 1 ? 3 : dated ? 2 : cl.unit != HX_UNIT_NONE ? 1 : 0;
         if (rank > best) {
             best = rank;
             c->t = times[i];
             c->t_unit = cl.unit;
             c->t_elapsed = cl.clock == -1;
-            c->t_dated = strchr(d[times[i]], ':') != NULL;
+            c->t_dated = dated;
         }
     }
     if (c->t < 0) {

@@ -1880,6 +1880,12 @@ static void test_datetime_stamps(void **state)
         { "2100-12-31T23:59:59.999999999Z", 4133980799999999999LL },
         { "23:59:59.5", 86399500000000LL },
         { "00:00:00,25", 250000000LL }, /* ISO's decimal comma, in a ;-separated log */
+        /* WitMotion's month, day and hour in one digit; MetaWear
+         * MetaBase's time in dots after a date and T */
+        { "2023-3-21 9:05:23.334", 1679389523334000000LL },
+        { "2023/12/1 15:05:23", 1701443123000000000LL },
+        { "2019-12-22T07.33.20.005", 1577000000005000000LL },
+        { "2024-05-01T12.00.00Z", 1714564800000000000LL },
     };
     /* years outside 1900-2100: the reader's 2^62 ns about 1970 span 1824-2116 */
     static const char *const far = "outside the years 1900 to 2100";
@@ -1892,6 +1898,10 @@ static void test_datetime_stamps(void **state)
         { "12:00:00 UTC", form },         { "2024-05-01 12:00", form },    { "2024-05-01 12:00:00.", form },
         { "2024-05-01 12:00:00+25:00", form }, { "1899-12-31T23:59:59Z", far }, { "2101-01-01 00:00:00", far },
         { "9999-12-31 23:59:59", far },
+        /* dots only after a date and T, and in all three places; no
+         * month or day of three digits or none */
+        { "2024-05-01 12.00.00", form },  { "2024-05-01T12.00:00", form }, { "2024-05-01T12:00.00", form },
+        { "2024-123-01 00:00:00", form }, { "2024--01 00:00:00", form },   { "2024-05-011 00:00:00", form },
     };
     size_t i;
     (void)state;

@@ -44,9 +44,9 @@ static int load(hx_tri_t *f, const char *text, hx_tri_kind_t kind, const char *u
 }
 
 /* MetaWear's accelerometer: the epoch taken, the logger's clock (not
- * elapsed (s), from the file's first sample; the date beside it is in
- * MetaBase's spelling, no date read), the axes in g to m/s^2; without the
- * epoch, an ISO date before elapsed (s); without either, elapsed (s) */
+ * elapsed (s), from the file's first sample, nor the date beside it, in
+ * MetaBase's dotted spelling), the axes in g to m/s^2; without the epoch,
+ * a date (ISO's or MetaBase's) before elapsed (s) */
 static void test_metawear_columns(void **state)
 {
     hx_tri_t f;
@@ -71,8 +71,8 @@ static void test_metawear_columns(void **state)
     hx_tri_free(&f);
     {
         /* without the epoch: an ISO date before elapsed (s) (read as it is
-         * written, the zone in the name is not added); without either (the
-         * date in MetaBase's spelling): elapsed (s) */
+         * written, the zone in the name is not added), and MetaBase's
+         * dotted one (before 2026-12-05 not read: elapsed (s) was) */
         static const struct {
             const char *text, *col;
             int from_start;
@@ -84,7 +84,12 @@ static void test_metawear_columns(void **state)
               "time (-13:00)", 0, 1699953200000000000LL, NULL },
             { "time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n"
               "2023-11-14T22.13.20.000,0.000,0.5,-1,2\n2023-11-14T22.13.20.010,0.010,1,0,0\n",
-              "elapsed (s)", 1, 0, "s" },
+              "time (-13:00)", 0, 1700000000000000000LL, NULL },
+            { "time (-13:00),x-axis (g),y-axis (g),z-axis (g)\n"
+              "2023-11-14T22.13.20.000,0.5,-1,2\n2023-11-14T22.13.20.010,1,0,0\n",
+              "time (-13:00)", 0, 1700000000000000000LL, NULL },
+            { "elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n0.000,0.5,-1,2\n0.010,1,0,0\n", "elapsed (s)", 1, 0,
+              "s" },
         };
         size_t i;
         for (i = 0; i < sizeof k / sizeof k[0]; i++) {
@@ -99,10 +104,10 @@ static void test_metawear_columns(void **state)
             assert_true(f.t_ns[0] == k[i].t0_ns && f.t_ns[1] - f.t_ns[0] == 10000000);
             hx_tri_free(&f);
         }
-        /* MetaBase's dotted date alone is no time: refused, not read */
+        /* a dotted time after a blank is no date and time: refused */
         assert_int_equal(load(&f,
                               "time (-13:00),x-axis (g),y-axis (g),z-axis (g)\n"
-                              "2023-11-14T22.13.20.000,0.5,-1,2\n2023-11-14T22.13.20.010,1,0,0\n",
+                              "2023-11-14 22.13.20.000,0.5,-1,2\n2023-11-14 22.13.20.010,1,0,0\n",
                               HX_TRI_ACC, NULL, err, sizeof err),
                          -1);
         assert_non_null(strstr(err, "the time column ('time (-13:00)') holds no number in the first row"));

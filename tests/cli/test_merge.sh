@@ -192,6 +192,24 @@ print('%d samples (numpy: %d), gyro %.3g rad/s, accel %.3g m/s^2 off' % (len(m),
 sys.exit(0 if n_ok and (got_ms == A[:, 0].astype(np.int64)).all() and dg < 2e-6 and da < 2e-5 else 1)
 PY
 ); then pass "MetaWear pair: numpy's values on the epoch ($msg)"; else fail "MetaWear pair: $msg"; fi
+# without the epoch, MetaBase's date and time in dots (2023-11-14T09.13.20.123)
+# is read before elapsed (s), which counts from each file's own first
+# sample (the gyroscope's 7 samples late): the pair merged as by the epoch
+for f in mw_acc mw_gyr; do
+    awk -F, 'BEGIN { OFS = "," } NR > 1 { gsub(":", ".", $2) } { $1 = ""; sub("^,", ""); print }' "$T/$f.csv" > "$T/${f}_dot.csv"
+done
+expect_exit 0 "merge a MetaBase pair by its dotted date" "$H" merge "$T/mw_acc_dot.csv" "$T/mw_gyr_dot.csv" "$T/mw_dot.csv"
+expect_err "mw_acc_dot.csv: .* time 'time (-13:00)' as dates and times" "MetaBase: the dotted date read over elapsed (s)"
+if msg=$(/usr/bin/python3 - "$T/mw.csv" "$T/mw_dot.csv" <<'PY'
+import sys, numpy as np
+a, b = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+n_ok = len(a) == len(b)
+dv = max(np.abs(a[k] - b[k]).max() for k in ('ax', 'ay', 'az', 'gx', 'gy', 'gz')) if n_ok else np.inf
+dt = np.abs((a['t'] - a['t'][0]) - (b['t'] - b['t'][0])).max() if n_ok else np.inf
+print('%d and %d samples, values %.3g, times %.3g s off' % (len(a), len(b), dv, dt))
+sys.exit(0 if n_ok and dv == 0 and dt < 1e-9 else 1)
+PY
+); then pass "MetaBase pair by the dotted date: the epoch's merge ($msg)"; else fail "MetaBase dotted date: $msg"; fi
 # without the epoch and the date, elapsed (s) is read and the start at 0 of
 # both files is said
 for f in mw_acc mw_gyr; do cut -d, -f3- "$T/$f.csv" > "$T/${f}_el.csv"; done

@@ -298,7 +298,10 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # ax, gravity removed; before, ax read as the specific force), nor two time
 # names that name their units (twotime: "Timestamp (ms)" in Unix ms with
 # the ns as decimals, read, and "Time since start in ms" in whole ms, not
-# read; before, refused with both named as candidates).
+# read; before, refused with both named as candidates), nor WitMotion's
+# export (wit: tab-separated, a date with the month, day and hour in one
+# digit, "2024-5-1 9:00:00.007531643", a device's name, g and degrees per
+# second, angles and a temperature; before, "time ... is no date and time").
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -307,7 +310,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb twotime; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb twotime wit; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -325,7 +328,7 @@ def onto_x(d):
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
      'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
      'kalibr': np.eye(3), 'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3),
-     'twotime': np.eye(3)}.get(sys.argv[3])
+     'twotime': np.eye(3), 'wit': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -424,6 +427,23 @@ elif sys.argv[3] == 'ptb':
         for ti, ai, gi in zip(d['t'], a, g):
             f.write('%.9f,' % ti + ','.join('%.9g' % v for v in list(ai / 9.80665) + list(ai - [0, 0, 9.8]) + list(gi)) +
                     ',1013.25,12.5,-3.1,40.2\n')
+elif sys.argv[3] == 'wit':
+    # WitMotion's PC software: tabs, 'Time' a local date and time (month,
+    # day and hour in one digit where they have one; here the ns as
+    # decimals), the device, g and deg/s (UTF-8 degree signs), angles
+    import datetime
+    t0 = datetime.datetime(2024, 5, 1, 9, 0, 0)
+    names = ['Time', 'Device name'] + ['Acceleration %s(g)' % c for c in 'XYZ'] + \
+        ['Angular velocity %s(\u00b0/s)' % c for c in 'XYZ'] + ['Angle %s(\u00b0)' % c for c in 'XYZ'] + \
+        ['Temperature(\u00b0C)']
+    with open(sys.argv[2], 'w', encoding='utf-8') as f:
+        f.write('\t'.join(names) + '\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9))
+            u = t0 + datetime.timedelta(seconds=ns // 10**9)
+            f.write('%d-%d-%d %d:%02d:%02d.%09d\tWT901BLE68(E4:5A:8C:01:02:03)\t' %
+                    (u.year, u.month, u.day, u.hour, u.minute, u.second, ns % 10**9) +
+                    '\t'.join('%.9g' % v for v in list(ai / 9.80665) + list(np.degrees(gi))) + '\t0.1\t-0.2\t30.5\t25.3\n')
 elif sys.argv[3] == 'twotime':
     # two clocks of the samples, each naming its unit: the first is read
     with open(sys.argv[2], 'w') as f:

@@ -197,6 +197,12 @@ def main():
     put('log_reader', 'csv_kalibr', bytes([FMT['auto']]) +
         b'timestamp,omega_x,omega_y,omega_z,alpha_x,alpha_y,alpha_z\n1385030208736607488,0.5,-0.2,-0.1,8.1,-1.9,-3.3\n'
         b'1385030208741607488,0.5,-0.1,-0.1,8.1,-1.9,-3.3\n')
+    # WitMotion's export: tabs, a date with one-digit month, day and hour
+    put('log_reader', 'csv_witmotion', bytes([FMT['auto']]) +
+        'Time\tDevice name\tAcceleration X(g)\tAcceleration Y(g)\tAcceleration Z(g)\tAngular velocity X(\u00b0/s)\t'
+        'Angular velocity Y(\u00b0/s)\tAngular velocity Z(\u00b0/s)\tAngle X(\u00b0)\n'.encode() +
+        b'2023-3-21 9:05:23.334\tWT901BLE68(E4:5A)\t0.01\t-0.02\t1.0\t0.0\t0.06\t0.0\t0.1\n'
+        b'2023-3-21 9:05:23.344\tWT901BLE68(E4:5A)\t0.01\t-0.02\t1.0\t0.0\t0.06\t0.0\t0.1\n')
     # several time names, the first naming its unit read (hx_names_match)
     put('log_reader', 'csv_two_times', bytes([FMT['auto']]) +
         b'Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz\n1700000000000.5,0,0.1,0.2,9.8,0,0,0\n'
@@ -240,6 +246,8 @@ gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
     put('merge', 'metawear_iso_gyr', b'\x05time (-13:00),elapsed (s),x-axis (deg/s),y-axis (deg/s),z-axis (deg/s)\n'
         b'2023-11-14T09:13:20.025,0.000,0.10,-0.41,0.01\n2023-11-14T09:13:20.027,0.002,0.22,-0.59,0.07\n'
         b'2023-11-14T09:13:20.030,0.005,0.31,-0.66,0.09\n')
+    put('merge', 'metabase_dotted_gyr', b'\x01time (-13:00),elapsed (s),x-axis (deg/s),y-axis (deg/s),z-axis (deg/s)\n'
+        b'2023-11-14T9.13.20.025,0.000,0.10,-0.41,0.01\n2023-11-14T9.13.20.027,0.002,0.22,-0.59,0.07\n')
     put('merge', 'phyphox_semi_gyr', b'\x01"Time (s)";"Gyroscope x (rad/s)";"Gyroscope y (rad/s)";"Gyroscope z (rad/s)"\n'
         b'0,000;0,5;-0,25;0,125\n0,010;0,6;-0,35;0,225\n0,020;0,7;-0,45;0,325\n')
     put('merge', 'slog_acc_ns', b'\x03time,seconds_elapsed,z,y,x\n1733300000000000000,0.0,9.8,0.1,0.2\n'
