@@ -98,6 +98,7 @@ struct hx_reader {
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
     int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
     int kalibr;                 /* csv: Kalibr's IMU CSV header matched (hx_names_kalibr) */
+    int sensorlog;              /* csv: SensorLog's header matched (hx_names_sensorlog) */
     int gforce;                 /* csv: Physics Toolbox's g-force names matched (hx_names_match) */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
@@ -1169,6 +1170,8 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
     l->names_matched = 1;
     r->ros = m->ros;
     r->kalibr = m->kalibr;
+    r->sensorlog = m->sensorlog;
+    l->negate |= m->negate; /* SensorLog's ax..az: iOS's sign */
     r->gforce = m->gforce;
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
@@ -1189,6 +1192,9 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
         add_warn(r, "%s: header read as %s (%s%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros      ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them"
+                 : m->sensorlog
+                     ? "SensorLog's names matched: the accelerometer in g with iOS's sign (z -1 g face up), read "
+                       "negated as the specific force; the rate in rad/s; the accelerometer's stamp in s"
                  : m->kalibr ? "Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the "
                                "specific force in m/s^2, as Kalibr's bag format sets them"
                  : m->gforce ? "names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force"
@@ -1989,7 +1995,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         m->has_temp = r->col_temp >= 0;
         copy_str(m->sensor, sizeof m->sensor,
                  r->consensys ? "Shimmer (Consensys export)" : r->ros ? "ROS sensor_msgs/Imu"
-                 : r->kalibr  ? "Kalibr IMU CSV" : r->gforce ? "Physics Toolbox (g-force)" : "unknown");
+                 : r->kalibr  ? "Kalibr IMU CSV" : r->sensorlog ? "SensorLog (iOS)"
+                 : r->gforce  ? "Physics Toolbox (g-force)" : "unknown");
         break;
     }
     case HX_FMT_NGIMU: {

@@ -674,6 +674,66 @@ int hx_names_kalibr(char *const *f, int n)
     return seen == 0x7e; /* ax..gz: alpha_x..z and omega_x..z all named */
 }
 
+/* SensorLog (iOS, B. Thomas): one row per logging sample of CoreMotion's
+ * readings, each sensor with its own stamp in s since the phone's boot.
+ * accelerometerAcceleration is CMAccelerometerData's, in g with iOS's
+ * sign: the acceleration, the specific force's negative (z -1 g face up,
+ * Apple's CMAcceleration docs), so it is read with the other sign on all
+ * three axes (m->negate); gyroRotation is CMGyroData's raw rate in rad/s,
+ * right-handed as the specific force's axes, before motionRotationRate
+ * (CoreMotion's fused, bias-corrected rate). The accelerometer's stamp
+ * is the row's time. CoreMotion's user acceleration and gravity (gravity
+ * apart), the logging time (a local date with " +0100") and the other
+ * sensors' stamps are named as not read. The names without their unit
+ * in parentheses, lower case. */
+static const name_row_t k_sensorlog[] = {
+    { "accelerometertimestamp_sincereboot", 0, 3, HX_UNIT_S },
+    { "gyrotimestamp_sincereboot", 0, 0, HX_UNIT_S },
+    { "motiontimestamp_sincereboot", 0, 0, HX_UNIT_S },
+    { "loggingtime", 0, 0, HX_UNIT_NONE },
+    { "accelerometeraccelerationx", 1, 1, HX_UNIT_G },
+    { "accelerometeraccelerationy", 2, 1, HX_UNIT_G },
+    { "accelerometeraccelerationz", 3, 1, HX_UNIT_G },
+    { "motionuseraccelerationx", 1, 0, HX_UNIT_G },
+    { "motionuseraccelerationy", 2, 0, HX_UNIT_G },
+    { "motionuseraccelerationz", 3, 0, HX_UNIT_G },
+    { "motiongravityx", 1, 0, HX_UNIT_G },
+    { "motiongravityy", 2, 0, HX_UNIT_G },
+    { "motiongravityz", 3, 0, HX_UNIT_G },
+    { "gyrorotationx", 4, 2, HX_UNIT_RPS },
+    { "gyrorotationy", 5, 2, HX_UNIT_RPS },
+    { "gyrorotationz", 6, 2, HX_UNIT_RPS },
+    { "motionrotationratex", 4, 1, HX_UNIT_RPS },
+    { "motionrotationratey", 5, 1, HX_UNIT_RPS },
+    { "motionrotationratez", 6, 1, HX_UNIT_RPS },
+};
+
+/* the k_sensorlog row of a name (case, quotes and blanks ignored; a unit
+ * in parentheses at its end, "(G)", "(rad/s)", "(s)", "(txt)", dropped);
+ * -1 none */
+static int sensorlog_row(const char *name)
+{
+    char bare[64];
+    const size_t len = lower_bare(name, bare, sizeof bare);
+    char *open = strchr(bare, '(');
+    if (open != NULL && len > 0 && bare[len - 1] == ')') {
+        *open = '\0';
+    }
+    return row_exact(bare, k_sensorlog, sizeof k_sensorlog / sizeof k_sensorlog[0]);
+}
+
+int hx_names_sensorlog(char *const *f, int n)
+{
+    int i, seen = 0;
+    for (i = 0; i < n; i++) {
+        const int k = sensorlog_row(f[i]);
+        if (k >= 0 && k_sensorlog[k].rank > 0 && k_sensorlog[k].key > 0) {
+            seen |= 1 << k_sensorlog[k].key;
+        }
+    }
+    return seen == 0x7e; /* accelerometerAcceleration x..z and a rate's x..z */
+}
+
 hx_name_unit_t hx_name_unit_of_text(const char *text)
 {
     char folded[64], u[32];
@@ -726,8 +786,14 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     } else if (hx_names_kalibr(f, n)) {
         m->kalibr = 1;
         rank_match(f, n, k_kalibr, kalibr_row, m);
+    } else if (hx_names_sensorlog(f, n)) {
+        m->sensorlog = 1;
+        rank_match(f, n, k_sensorlog, sensorlog_row, m);
+        m->unit[1] = HX_UNIT_G;
+        m->unit[2] = HX_UNIT_RPS;
+        m->negate = 0x0e; /* ax..az: iOS's acceleration is the specific force's negative */
     }
-    for (i = 0; i < n && !m->consensys && !m->ros && !m->kalibr; i++) {
+    for (i = 0; i < n && !m->consensys && !m->ros && !m->kalibr && !m->sensorlog; i++) {
         hx_name_class_t c;
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
         if (kind == HX_NAME_MATCH && c.key == 0 && c.clock == 1) {
@@ -749,7 +815,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         m->ncand[0] = nclock;
         clocks = nclock > 0;
     }
-    if (m->ncand[0] > 1 && !m->consensys && !m->ros && !m->kalibr) {
+    if (m->ncand[0] > 1 && !m->consensys && !m->ros && !m->kalibr && !m->sensorlog) {
         /* several time names ("Timestamp (ms)" and AndroSensor's "Time
          * since start in ms"): each is a clock of the samples, and one
          * is as good as another for their intervals, so the first that
@@ -797,7 +863,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             m->ncand[k] = ngf[k];
         }
     }
-    for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros && !m->kalibr; i++) {
+    for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros && !m->kalibr && !m->sensorlog; i++) {
         /* a key without a candidate that one name has but for its unit:
          * the refusal names the unit (hx_names_unit_problem) */
         hx_name_class_t c;
@@ -815,9 +881,10 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             m->ok = 0;
         }
     }
-    if (m->consensys || m->ros || m->kalibr) {
+    if (m->consensys || m->ros || m->kalibr || m->sensorlog) {
         /* Consensys: the units are the row's under the header (hx_log.c);
-         * ROS and Kalibr: SI, the time's set by rank_match */
+         * ROS and Kalibr: SI, the time's set by rank_match; SensorLog: g
+         * and rad/s, set above */
         return m->ok;
     }
     if (m->col[0] >= 0) {
@@ -930,7 +997,7 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
             hx_name_bare(f[m->cand[k][0]], name, sizeof name);
             cat(map, sizeof map, map[0] != '\0' ? "," : "");
             cat(map, sizeof map, k_keys[k]);
-            cat(map, sizeof map, "=");
+            cat(map, sizeof map, (m->negate >> k) & 1 ? "=-" : "=");
             cat(map, sizeof map, name);
             if (k == 0 && m->col_tns >= 0) {
                 hx_name_bare(f[m->col_tns], name, sizeof name);

@@ -90,6 +90,16 @@ int hx_names_ros(char *const *f, int n);
  *  omega), and timestamp (or timestamp_ns) in ns, as Kalibr writes them. */
 int hx_names_kalibr(char *const *f, int n);
 
+/** Whether a header is SensorLog's (the iOS app's CSV): it names
+ *  accelerometerAccelerationX..Z and gyroRotationX..Z or
+ *  motionRotationRateX..Z (case ignored, a unit in parentheses after
+ *  each). Matched from those names: the accelerometer in g with iOS's
+ *  sign, read negated (the specific force), the raw gyroRotation before
+ *  motionRotationRate in rad/s, accelerometerTimestamp_sinceReboot in s
+ *  the time; CoreMotion's user acceleration, gravity, the logging time
+ *  and the other stamps named as not read. */
+int hx_names_sensorlog(char *const *f, int n);
+
 /** The column of a ROS topic's receive time among the n header fields f
  *  (%time, in ns, before bagpy's Time, in s), its unit in *unit; -1 when
  *  there is none. */
@@ -126,6 +136,8 @@ typedef struct {
     int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */
     int ros;            /**< 1: a ROS sensor_msgs/Imu header (hx_names_ros): SI units, the stamp in ns or s */
     int kalibr;         /**< 1: Kalibr's IMU CSV header (hx_names_kalibr): SI units, the stamp in ns */
+    int sensorlog;      /**< 1: SensorLog's header (hx_names_sensorlog): g and rad/s, the stamp in s */
+    int negate;         /**< bit k: key k (1..6, ax..gz) read with the other sign (SensorLog's ax..az) */
     int gforce;         /**< 1: the accelerations are Physics Toolbox's g-force names (gFx..gFz); the app's
                              other acceleration names (ax..az, its linear acceleration, gravity removed)
                              are then not read, and listed with the near misses */

@@ -3620,6 +3620,26 @@ static void test_names_match(void **state)
           "time=ns" },
         { "t,alpha_x,alpha_y,alpha_z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
           "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* SensorLog (iOS): the accelerometer in g read negated (iOS's
+         * sign), the raw gyroRotation before CoreMotion's fused rate, the
+         * accelerometer's stamp; without a rate's names no SensorLog */
+        { "loggingTime(txt),loggingSample(N),accelerometerTimestamp_sinceReboot(s),accelerometerAccelerationX(G),"
+          "accelerometerAccelerationY(G),accelerometerAccelerationZ(G),gyroTimestamp_sinceReboot(s),"
+          "gyroRotationX(rad/s),gyroRotationY(rad/s),gyroRotationZ(rad/s),motionRotationRateX(rad/s),"
+          "motionRotationRateY(rad/s),motionRotationRateZ(rad/s)",
+          1, { 2, 3, 4, 5, 7, 8, 9 }, { HX_UNIT_S, HX_UNIT_G, HX_UNIT_RPS },
+          "--columns 't=accelerometerTimestamp_sinceReboot(s),ax=-accelerometerAccelerationX(G),"
+          "ay=-accelerometerAccelerationY(G),az=-accelerometerAccelerationZ(G),gx=gyroRotationX(rad/s),"
+          "gy=gyroRotationY(rad/s),gz=gyroRotationZ(rad/s)' --units time=s,accel=g,gyro=rad/s" },
+        { "accelerometerTimestamp_sinceReboot,accelerometerAccelerationX,accelerometerAccelerationY,"
+          "accelerometerAccelerationZ,motionRotationRateX,motionRotationRateY,motionRotationRateZ",
+          1, { 0, 1, 2, 3, 4, 5, 6 }, { HX_UNIT_S, HX_UNIT_G, HX_UNIT_RPS },
+          "--columns t=accelerometerTimestamp_sinceReboot,ax=-accelerometerAccelerationX,"
+          "ay=-accelerometerAccelerationY,az=-accelerometerAccelerationZ,gx=motionRotationRateX,"
+          "gy=motionRotationRateY,gz=motionRotationRateZ --units time=s,accel=g,gyro=rad/s" },
+        { "accelerometerTimestamp_sinceReboot(s),accelerometerAccelerationX(G),accelerometerAccelerationY(G),"
+          "accelerometerAccelerationZ(G),gyro_x,gyro_y,gyro_z",
+          0, { -1, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 }, "--columns gx=gyro_x,gy=gyro_y,gz=gyro_z" },
         /* one quantity in two units: no one --units item reads it */
         { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
           "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },

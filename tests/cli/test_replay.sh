@@ -301,7 +301,13 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # read; before, refused with both named as candidates), nor WitMotion's
 # export (wit: tab-separated, a date with the month, day and hour in one
 # digit, "2024-5-1 9:00:00.007531643", a device's name, g and degrees per
-# second, angles and a temperature; before, "time ... is no date and time").
+# second, angles and a temperature; before, "time ... is no date and time"),
+# nor SensorLog's CSV (sensorlog: the iOS app's accelerometerAcceleration in
+# g with iOS's sign, z -1 g face up, read negated; gyroRotation in rad/s;
+# the accelerometer's stamp since boot in s; CoreMotion's user acceleration
+# and gravity beside them, not read; before, refused with near misses, and
+# the sign given by --columns would have navigated the walk's mirror image
+# without it: the heading change's sign checks it).
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -310,7 +316,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb twotime wit; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc kalibr andro epochms ptb twotime wit sensorlog; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -328,7 +334,8 @@ def onto_x(d):
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
      'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
      'kalibr': np.eye(3), 'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3),
-     'twotime': np.eye(3), 'wit': np.eye(3)}.get(sys.argv[3])
+     'twotime': np.eye(3), 'wit': np.eye(3),
+     'sensorlog': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -444,6 +451,24 @@ elif sys.argv[3] == 'wit':
             f.write('%d-%d-%d %d:%02d:%02d.%09d\tWT901BLE68(E4:5A:8C:01:02:03)\t' %
                     (u.year, u.month, u.day, u.hour, u.minute, u.second, ns % 10**9) +
                     '\t'.join('%.9g' % v for v in list(ai / 9.80665) + list(np.degrees(gi))) + '\t0.1\t-0.2\t30.5\t25.3\n')
+elif sys.argv[3] == 'sensorlog':
+    # SensorLog (iOS): a local logging time, the sample's number, then
+    # each sensor's stamp since boot and its readings: the accelerometer
+    # in g with iOS's sign (the specific force's negative), the raw rate
+    # in rad/s, then CoreMotion's fused rate, user acceleration and gravity
+    names = ['loggingTime(txt)', 'loggingSample(N)', 'accelerometerTimestamp_sinceReboot(s)'] + \
+        ['accelerometerAcceleration%s(G)' % c for c in 'XYZ'] + ['gyroTimestamp_sinceReboot(s)'] + \
+        ['gyroRotation%s(rad/s)' % c for c in 'XYZ'] + ['motionTimestamp_sinceReboot(s)'] + \
+        ['motionRotationRate%s(rad/s)' % c for c in 'XYZ'] + ['motionUserAcceleration%s(G)' % c for c in 'XYZ'] + \
+        ['motionGravity%s(G)' % c for c in 'XYZ']
+    with open(sys.argv[2], 'w') as f:
+        f.write(','.join(names) + '\n')
+        for i, (ti, ai, gi) in enumerate(zip(d['t'], a, g)):
+            ns = int(round(ti * 1e9)) + 266943391 * 10**6
+            f.write('2024-05-01 12:00:00.000 +0200,%d,%d.%09d,' % (i, ns // 10**9, ns % 10**9) +
+                    ','.join('%.9g' % v for v in -ai / 9.80665) + ',%d.%09d,' % ((ns + 900000) // 10**9, (ns + 900000) % 10**9) +
+                    ','.join('%.9g' % v for v in gi) + ',%d.%09d,' % (ns // 10**9, ns % 10**9) +
+                    ','.join('%.9g' % v for v in list(gi * 0.99) + [0.01, -0.02, 0.03] + [0.0, 0.0, -1.0]) + '\n')
 elif sys.argv[3] == 'twotime':
     # two clocks of the samples, each naming its unit: the first is read
     with open(sys.argv[2], 'w') as f:
@@ -499,6 +524,16 @@ expect_exit 0 "info on the kalibr variant" "$H" info "$T/m_kalibr.csv"
 expect_err "m_kalibr.csv: header read as --columns t=timestamp,ax=alpha_x,ay=alpha_y,az=alpha_z,gx=omega_x,gy=omega_y,gz=omega_z --units time=ns (Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the specific force in m/s^2, as Kalibr's bag format sets them; give --columns to choose otherwise)$" \
     "kalibr: the warning says how the names are read"
 expect_out "^sensor      Kalibr IMU CSV$" "kalibr: info names the format"
+# the sensorlog variant: the warning names the negated accelerometer, the
+# map it prints reads the same samples; info names the app
+expect_exit 0 "info on the sensorlog variant" "$H" info "$T/m_sensorlog.csv"
+expect_err "m_sensorlog.csv: header read as --columns 't=accelerometerTimestamp_sinceReboot(s),ax=-accelerometerAccelerationX(G),ay=-accelerometerAccelerationY(G),az=-accelerometerAccelerationZ(G),gx=gyroRotationX(rad/s),gy=gyroRotationY(rad/s),gz=gyroRotationZ(rad/s)' --units accel=g (SensorLog's names matched: the accelerometer in g with iOS's sign (z -1 g face up), read negated as the specific force; the rate in rad/s; the accelerometer's stamp in s; not read: loggingTime(txt), gyroTimestamp_sinceReboot(s), motionTimestamp_sinceReboot(s), motionUserAccelerationX(G), ...; give --columns to choose otherwise)$" \
+    "sensorlog: the warning says how the names are read"
+expect_out "^sensor      SensorLog (iOS)$" "sensorlog: info names the app"
+expect_exit 0 "the sensorlog variant by the printed --columns" "$H" replay "$T/m_sensorlog.csv" --out "$T/m_sl_cols.csv" --quiet \
+    --columns "t=accelerometerTimestamp_sinceReboot(s),ax=-accelerometerAccelerationX(G),ay=-accelerometerAccelerationY(G),az=-accelerometerAccelerationZ(G),gx=gyroRotationX(rad/s),gy=gyroRotationY(rad/s),gz=gyroRotationZ(rad/s)" --units accel=g
+if cmp -s "$T/m_sl_cols.csv" "$T/m_sensorlog_traj.csv"; then pass "sensorlog: the printed map reads the same walk, byte for byte"
+else fail "sensorlog: the printed map gives another trajectory"; fi
 # the twotime variant: the warning says which time name is read and names
 # the other as not read
 expect_exit 0 "info on the twotime variant" "$H" info "$T/m_twotime.csv"

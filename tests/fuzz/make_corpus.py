@@ -203,6 +203,13 @@ def main():
         'Angular velocity Y(\u00b0/s)\tAngular velocity Z(\u00b0/s)\tAngle X(\u00b0)\n'.encode() +
         b'2023-3-21 9:05:23.334\tWT901BLE68(E4:5A)\t0.01\t-0.02\t1.0\t0.0\t0.06\t0.0\t0.1\n'
         b'2023-3-21 9:05:23.344\tWT901BLE68(E4:5A)\t0.01\t-0.02\t1.0\t0.0\t0.06\t0.0\t0.1\n')
+    # SensorLog (iOS): the accelerometer read negated, g and rad/s
+    put('log_reader', 'csv_sensorlog', bytes([FMT['auto']]) +
+        b'loggingTime(txt),loggingSample(N),accelerometerTimestamp_sinceReboot(s),accelerometerAccelerationX(G),'
+        b'accelerometerAccelerationY(G),accelerometerAccelerationZ(G),gyroTimestamp_sinceReboot(s),'
+        b'gyroRotationX(rad/s),gyroRotationY(rad/s),gyroRotationZ(rad/s),motionUserAccelerationX(G)\n'
+        b'2019-03-19 13:12:49.592 +0100,0,266943.391,0.01,-0.02,-1.0,266943.392,0.001,0.002,0.003,0.0\n'
+        b'2019-03-19 13:12:49.602 +0100,1,266943.401,0.01,-0.02,-1.0,266943.402,0.001,0.002,0.003,0.0\n')
     # several time names, the first naming its unit read (hx_names_match)
     put('log_reader', 'csv_two_times', bytes([FMT['auto']]) +
         b'Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz\n1700000000000.5,0,0.1,0.2,9.8,0,0,0\n'
