@@ -270,13 +270,28 @@ static int date_then_time(const char *s, size_t len, const char *next)
            isdigit((unsigned char)next[h + 2]);
 }
 
+/* Whether the word at s (to a blank, a line end or the end) is a zone's
+ * offset, +hh:mm or +hhmm (or '-'), hh 00-19: the offset a date and time
+ * may carry after a blank, no value a log writes so. */
+static int zone_word(const char *s)
+{
+    const char *p = s + 3;
+    if ((s[0] != '+' && s[0] != '-') || (s[1] != '0' && s[1] != '1') || !isdigit((unsigned char)s[2])) {
+        return 0;
+    }
+    p += *p == ':';
+    return p[0] >= '0' && p[0] <= '5' && isdigit((unsigned char)p[1]) &&
+           (p[2] == '\0' || p[2] == ' ' || p[2] == '\t' || p[2] == '\r' || p[2] == '\n');
+}
+
 /* Split line in place; returns the number of fields. Blank-separated
  * (delim ' '): runs of blanks separate, except between a date and a clock
- * time, which stay one field with one blank between them ("2024-05-01
- * 12:00:00.5", as a date and time is written). */
+ * time, and the offset after it, which stay one field with one blank
+ * between them ("2024-05-01 12:00:00.5", as a date and time is written,
+ * "2024-05-01 12:00:00.5 +0200"). */
 static int split(char *line, char delim, char **f, int max)
 {
-    int n = 0, quoted = 0;
+    int n = 0, quoted = 0, joined;
     char *p = line;
     if (delim == ' ') {
         while (*p != '\0' && n < max) {
@@ -287,20 +302,22 @@ static int split(char *line, char delim, char **f, int max)
                 break;
             }
             f[n++] = p;
-            for (;;) {
+            for (joined = 0;; joined++) {
                 char *q;
                 while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
                     p++;
                 }
-                if (*p == '\0' || p - f[n - 1] < 8 || p - f[n - 1] > 10) {
+                if (*p == '\0' || joined > 1 || (joined == 0 && (p - f[n - 1] < 8 || p - f[n - 1] > 10))) {
                     break; /* no date's length: nothing more to look at (every other field of a row) */
                 }
                 for (q = p; *q == ' ' || *q == '\t'; q++) {
                 }
-                if (!date_then_time(f[n - 1], (size_t)(p - f[n - 1]), q)) {
+                if (joined == 0 ? !date_then_time(f[n - 1], (size_t)(p - f[n - 1]), q) : !zone_word(q)) {
                     break;
                 }
-                *p = ' '; /* the date's blanks as one: the time follows in the same field */
+                /* the date's blanks as one: the time follows in the same
+                 * field, and an offset after it ("+0100") */
+                *p = ' ';
                 memmove(p + 1, q, strlen(q) + 1);
                 p++;
             }
@@ -477,7 +494,8 @@ static int64_t days_from_civil(int y, int m, int d)
  * the month, the day and the hour after a date in one digit or two
  * (WitMotion's "2023-3-21 9:05:23.334"), the time's ':' written '.' after
  * a date and 'T' (MetaWear MetaBase's "2019-12-22T07.33.20.000"), an
- * optional zone ("Z", "+hh:mm", "+hhmm", "+hh"), or a clock time alone
+ * optional zone ("Z", "+hh:mm", "+hhmm", "+hh"; an offset after a date
+ * also after one blank, "... 13:12:49.592 +0100"), or a clock time alone
  * ("hh:mm:ss[.f]", seconds since midnight). To integer ns since
  * 1970-01-01T00:00:00Z (the clock alone: since midnight), the fraction
  * rounded to the ns. 0 ok; 1 not of this shape (a number, say); -4 of
@@ -551,6 +569,9 @@ static int parse_datetime_ns(const char *s, int64_t *out)
         }
     }
     sec = days * 86400 + hh * 3600 + mi * 60 + ss;
+    if (*p == ' ' && (p[1] == '+' || p[1] == '-') && dated) {
+        p++; /* one blank before an offset: "13:12:49.592 +0100" (SensorLog's, Java's "Z" pattern) */
+    }
     if (*p == 'Z' || *p == 'z') {
         p++;
     } else if ((*p == '+' || *p == '-') && dated) {

@@ -1886,6 +1886,8 @@ static void test_datetime_stamps(void **state)
         { "2023/12/1 15:05:23", 1701443123000000000LL },
         { "2019-12-22T07.33.20.005", 1577000000005000000LL },
         { "2024-05-01T12.00.00Z", 1714564800000000000LL },
+        /* an offset after one blank (SensorLog's loggingTime) */
+        { "2024-05-01 14:00:00.005 +0200", 1714564800005000000LL },
     };
     /* years outside 1900-2100: the reader's 2^62 ns about 1970 span 1824-2116 */
     static const char *const far = "outside the years 1900 to 2100";
@@ -1902,6 +1904,7 @@ static void test_datetime_stamps(void **state)
          * month or day of three digits or none */
         { "2024-05-01 12.00.00", form },  { "2024-05-01T12.00:00", form }, { "2024-05-01T12:00.00", form },
         { "2024-123-01 00:00:00", form }, { "2024--01 00:00:00", form },   { "2024-05-011 00:00:00", form },
+        { "2024-05-01 12:00:00  +0200", form }, { "12:00:00 +0200", form }, { "2024-05-01 12:00:00 Z", form },
     };
     size_t i;
     (void)state;
@@ -1951,6 +1954,29 @@ static void test_datetime_stamps(void **state)
             fail_msg("case %zu (%s): end %d, n %ld: %s", i, bad[i].stamp, (int)r.end, (long)r.n, r.err);
         }
         unlink(p);
+    }
+    {
+        /* blank-separated: a value after a date and time that is no
+         * offset (a sign, then not hh and mm) stays its own column */
+        static const char *const after[] = { "-12", "-0.25", "+5", "-0130.5", "-2060", "+12:3" };
+        static const double want[] = { -12.0, -0.25, 5.0, -130.5, -2060.0, 0.0 };
+        char p[256], text[256];
+        readall_t r;
+        for (i = 0; i < sizeof after / sizeof after[0]; i++) {
+            tmp_path(p, sizeof p, ".csv");
+            snprintf(text, sizeof text, "t ax ay az gx gy gz\n2024-05-01 12:00:00.5 %s 0.2 9.8 0.1 0.2 0.3\n",
+                     after[i]);
+            write_text(p, text);
+            assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+            if (want[i] != 0.0 && (r.n != 1 || r.s[0].t_ns != 1714564800500000000LL ||
+                                   (float)r.s[0].accel_mps2[0] != (float)want[i])) {
+                fail_msg("after %s: n %ld: %s", after[i], (long)r.n, r.err);
+            }
+            if (want[i] == 0.0 && r.n != 0) { /* "+12:3": no number, no offset: the row refused */
+                fail_msg("after %s: read, n %ld", after[i], (long)r.n);
+            }
+            unlink(p);
+        }
     }
     {
         /* a log without its header whose stamps are dates and times is
