@@ -891,7 +891,7 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         const size_t got = fread(head, 1, sizeof head, f);
         const hx_head_t kind = hx_head_not_text(path, head, got, 1, head_msg, sizeof head_msg);
         rewind(f);
-        if (kind == HX_HEAD_UTF16) {
+        if (kind == HX_HEAD_UTF16 || kind == HX_HEAD_CONTAINER) {
             hx_error(CMD, "%s", head_msg);
             fclose(f);
             return -1;

@@ -2935,11 +2935,66 @@ static const char *utf16_of(const unsigned char *b, size_t n)
     return le ? "UTF-16LE" : (be ? "UTF-16BE" : NULL);
 }
 
+/* Archives, containers and databases a log may come in, by their first
+ * bytes (each format's published magic): what the file is and what to do
+ * with it, for hx_head_not_text. */
+static const struct {
+    const char *magic;
+    size_t len;
+    const char *what;
+} k_containers[] = {
+    { "PK\x03\x04", 4, "a ZIP archive (an app's export of several files, or an .xlsx or .ods workbook): unzip it "
+                        "(unzip FILE) and give the log inside; a workbook: save its sheet as CSV" },
+    { "PK\x05\x06", 4, "an empty ZIP archive: no log inside" },
+    { "\x89HDF\r\n\x1a\n", 8, "an HDF5 file (APDM's .h5, a MATLAB v7.3 .mat): write the IMU's data as CSV, e.g. "
+                                "with h5dump or Python's h5py" },
+    { "MATLAB 5.0 MAT-file", 19, "a MATLAB .mat file: write the IMU's data as CSV (writematrix or writetable)" },
+    { "#ROSBAG V", 9, "a ROS bag: write its IMU topic as CSV (rostopic echo -b FILE -p /TOPIC > imu.csv) and give "
+                      "that (docs/log-format.md, \"ROS, EuRoC and Kalibr\")" },
+    { "SQLite format 3", 16, "an SQLite database: write the IMU's table as CSV (sqlite3 -header -csv FILE "
+                             "'select * from TABLE' > imu.csv)" },
+    { "BZh", 3, "bzip2-compressed data: decompress it (bunzip2 -k FILE) and give the result" },
+    { "\xfd" "7zXZ", 5, "xz-compressed data: decompress it (unxz -k FILE) and give the result" },
+    { "\x28\xb5\x2f\xfd", 4, "zstd-compressed data: decompress it (unzstd FILE) and give the result" },
+    { "7z\xbc\xaf\x27\x1c", 6, "a 7-Zip archive: extract it (7z x FILE) and give the log inside" },
+    { "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8, "an Excel .xls workbook (or another OLE file): save its sheet as CSV" },
+    { "PAR1", 4, "an Apache Parquet file: write it as CSV (e.g. pandas' read_parquet, then to_csv)" },
+};
+
+/* "PATH: not a log but WHAT", FILE in what (its remedy's command) given
+ * as the path, one shell word */
+static void container_msg(char *msg, size_t size, const char *path, const char *what, int series)
+{
+    const char *file = strstr(what, "FILE");
+    char word[1100];
+    if (file != NULL && hx_shell_word(path, 0, word, sizeof word)[0] != '\0' && path[0] != '-') {
+        snprintf(msg, size, "%s: not a %s but %.*s%s%s", path, series ? "series" : "log", (int)(file - what), what,
+                 word, file + 4);
+    } else {
+        snprintf(msg, size, "%s: not a %s but %s", path, series ? "series" : "log", what);
+    }
+}
+
 hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n, int series, char *msg,
                            size_t msg_size)
 {
     const char *utf16 = utf16_of(head, n);
     long bin_at;
+    size_t c;
+    for (c = 0; c < sizeof k_containers / sizeof k_containers[0]; c++) {
+        const size_t len = k_containers[c].len;
+        /* BZh is text's too ("BZh" a name?): bzip2's block size digit and
+         * its block magic 1AY&SY after it */
+        const int bz = len == 3 && !(n >= 10 && head[3] >= '1' && head[3] <= '9' && memcmp(head + 4, "1AY&SY", 6) == 0);
+        if (n >= len && memcmp(head, k_containers[c].magic, len) == 0 && !bz) {
+            container_msg(msg, msg_size, path, k_containers[c].what, series);
+            return HX_HEAD_CONTAINER;
+        }
+    }
+    if (n >= 262 && memcmp(head + 257, "ustar", 5) == 0) { /* POSIX tar: "ustar" at byte 257 (a .tar.gz unpacked) */
+        container_msg(msg, msg_size, path, "a tar archive: extract it (tar xf FILE) and give the log inside", series);
+        return HX_HEAD_CONTAINER;
+    }
     if (utf16 != NULL) {
         snprintf(msg, msg_size, "%s: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f %s -t UTF-8 %s > %s; %s)",
                  path, utf16, path, series ? "copy.txt" : "copy.csv",
@@ -3008,11 +3063,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         return NULL;
     }
     if (fmt != HX_FMT_BIN &&
-        (head_kind = hx_head_not_text(path, head, (size_t)got, 0, head_msg, sizeof head_msg)) == HX_HEAD_UTF16) {
+        ((head_kind = hx_head_not_text(path, head, (size_t)got, 0, head_msg, sizeof head_msg)) == HX_HEAD_UTF16 ||
+         head_kind == HX_HEAD_CONTAINER)) {
         /* Windows' "Unicode text" export: "FILE:1: a NUL byte in the text
          * (binary data ...)" with its byte-order mark, the hint of
          * --columns without it would be wrong: it only needs saving as
-         * UTF-8 */
+         * UTF-8. An archive or a database (a zip, a ROS bag): named, with
+         * what to do, not "a NUL byte" at some line */
         snprintf(err, err_size, "%s", head_msg);
         gzclose(r->gz);
         free(r);

@@ -208,7 +208,8 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz,
 typedef enum {
     HX_HEAD_TEXT = 0, /**< text, as far as its first bytes tell */
     HX_HEAD_UTF16,    /**< UTF-16 text (Windows' "Unicode text"), with or without a byte-order mark */
-    HX_HEAD_BINARY    /**< a byte no text holds (a control character but tab, LF, VT, FF, CR; DEL) */
+    HX_HEAD_BINARY,   /**< a byte no text holds (a control character but tab, LF, VT, FF, CR; DEL) */
+    HX_HEAD_CONTAINER /**< a known archive, container or database (zip, HDF5, a ROS bag, ...) by its magic */
 } hx_head_t;
 
 /** Whether the file @p path, whose first bytes are head[0..n), is no text:
@@ -216,8 +217,11 @@ typedef enum {
  *  iconv -f ENC -t UTF-8 PATH > copy.csv; ...)", ENC as iconv reads it)
  *  or binary data (msg gets "PATH: binary data, not a log: its first bytes
  *  .. hold 0x.. at byte N, ..."), for a log (@p series 0) or a series of
- *  numbers (1: "not a series", copy.txt, docs/allan.md); msg is left alone
- *  for text. The readers' open and `allan --series` share it. */
+ *  numbers (1: "not a series", copy.txt, docs/allan.md), or a known
+ *  archive, container or database by its first bytes (msg gets "PATH: a
+ *  ZIP archive (...), not a log: unzip it ..." with what to do); msg is
+ *  left alone for text. The readers' open, `merge` and `allan --series`
+ *  share it; UTF-16 and a container are refused at once. */
 hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n, int series, char *msg,
                            size_t msg_size);
 

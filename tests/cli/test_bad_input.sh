@@ -432,10 +432,47 @@ for f in plot.png book.xlsx; do
         kind=log
         case $c in *--series) kind=series ;; esac
         expect_exit 1 "$c of $f (binary, no $kind)" "$H" $c "$T/$f"
-        expect_err "$f: binary data, not a $kind: " "$c: $f said to be binary data"
+        case $f in
+        *.png) expect_err "$f: binary data, not a $kind: " "$c: $f said to be binary data" ;;
+        *) expect_err "$f: not a $kind but a ZIP archive (an app's export of several files, or an .xlsx or .ods workbook): unzip it (unzip $T/$f) and give the log inside; a workbook: save its sheet as CSV$" \
+            "$c: $f named as a ZIP archive, with what to do" ;;
+        esac
         grep -q -- "--columns" "$T/err" && fail "$c: $f: the advice of --columns given" || pass "$c: $f: no --columns advice"
     done
 done
+# other archives, containers and databases a log may come in, by their
+# magic bytes (each format's published signature): named, with what to do
+# (before: "binary data" with the bytes, or "a NUL byte" at some line)
+"${PY:-/usr/bin/python3}" - "$T" <<'PY' || fail "write the containers"
+import bz2, gzip, io, lzma, sys, tarfile, zipfile
+T = sys.argv[1]
+csv = b't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n'
+with zipfile.ZipFile(T + '/export.zip', 'w') as z:
+    z.writestr('walk.csv', csv)
+open(T + '/walk.csv.bz2', 'wb').write(bz2.compress(csv))
+open(T + '/walk.csv.xz', 'wb').write(lzma.compress(csv))
+with tarfile.open(T + '/walk.tar.gz', 'w:gz') as t:
+    info = tarfile.TarInfo('walk.csv'); info.size = len(csv); t.addfile(info, io.BytesIO(csv))
+open(T + '/walk.h5', 'wb').write(b'\x89HDF\r\n\x1a\n' + bytes(64))
+open(T + '/walk.bag', 'wb').write(b'#ROSBAG V2.0\nE\x00\x00\x00' + bytes(64))
+open(T + '/walk.mat', 'wb').write(b'MATLAB 5.0 MAT-file, Platform: GLNXA64' + bytes(90))
+open(T + '/walk.db', 'wb').write(b'SQLite format 3\x00' + bytes(84))
+open(T + '/walk.xls', 'wb').write(b'\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1' + bytes(64))
+open(T + '/bzh.csv', 'wb').write(b'BZh,ax\n1,2\n')  # text that begins as bzip2's magic does
+PY
+for fw in "export.zip:a ZIP archive" "walk.csv.bz2:bzip2-compressed data: decompress it (bunzip2 -k $T/walk.csv.bz2)" \
+    "walk.csv.xz:xz-compressed data: decompress it (unxz -k $T/walk.csv.xz)" "walk.tar.gz:a tar archive: extract it (tar xf $T/walk.tar.gz)" \
+    "walk.h5:an HDF5 file" "walk.bag:a ROS bag: write its IMU topic as CSV (rostopic echo -b $T/walk.bag -p /TOPIC > imu.csv)" \
+    "walk.mat:a MATLAB .mat file" "walk.db:an SQLite database" "walk.xls:an Excel .xls workbook"; do
+    f=${fw%%:*} w=${fw#*:}
+    expect_exit 1 "replay of $f" "$H" replay "$T/$f"
+    if grep -qF -- "$f: not a log but $w" "$T/err"; then pass "$f: named as $w"; else fail "$f: $(cat "$T/err")"; fi
+done
+printf "t,x,y,z\n0,0,0,0\n" >"$T/gyr1.csv"
+expect_exit 1 "merge of a zip" "$H" merge "$T/export.zip" "$T/gyr1.csv" "$T/m.csv"
+expect_err "export.zip: not a log but a ZIP archive" "merge: the zip named"
+expect_exit 1 "info of a text CSV that begins with BZh" "$H" info "$T/bzh.csv"
+if grep -q "bzip2" "$T/err"; then fail "a text CSV that begins with BZh taken for bzip2"; else pass "a text CSV that begins with BZh is text"; fi
 expect_exit 1 "convert of plot.png" "$H" convert "$T/plot.png" "$T/plot.csv"
 expect_err "plot.png: binary data, not a log: its first bytes 89 50 4e 47 0d 0a 1a 0a hold 0x1a at byte 7" "convert: the bytes named"
 # a CSV saved as UTF-16 (Windows' "Unicode text" export, with or without its
