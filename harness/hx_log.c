@@ -83,6 +83,8 @@ struct hx_reader {
     int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
     int hdr_fields;             /* fields of the header line (at most HX_MAX_COLS); 0: no header */
+    int date_join;              /* blanks: -1 not yet known, 1 a date and its time one field, 0 not (the
+                                   header names them apart: "date time ax ..."), by the first row */
     char time_beside[64];       /* adis, square2: a time-named column the format does not read, "" none */
     hx_name_unit_t time_beside_unit; /* its unit as named (HX_UNIT_NONE: none named) */
     int last_line;              /* next_text_fields is parsing a last line without a newline */
@@ -261,7 +263,7 @@ static int date_then_time(const char *s, size_t len, const char *next)
 {
     const size_t h = next[0] != '\0' && isdigit((unsigned char)next[1]) ? 2 : 1;
     const size_t m = strspn(s + 5, "0123456789");
-    const size_t d = m < len ? strspn(s + 6 + m, "0123456789") : 0;
+    const size_t d = 5 + m < len ? strspn(s + 6 + m, "0123456789") : 0;
     if (len < 8 || strspn(s, "0123456789") != 4 || (s[4] != '-' && s[4] != '/') || m < 1 || m > 2 ||
         s[5 + m] != s[4] || d < 1 || d > 2 || 6 + m + d != len) {
         return 0;
@@ -289,7 +291,7 @@ static int zone_word(const char *s)
  * time, and the offset after it, which stay one field with one blank
  * between them ("2024-05-01 12:00:00.5", as a date and time is written,
  * "2024-05-01 12:00:00.5 +0200"). */
-static int split(char *line, char delim, char **f, int max)
+static int split_join(char *line, char delim, char **f, int max, int dates)
 {
     int n = 0, quoted = 0, joined;
     char *p = line;
@@ -307,7 +309,7 @@ static int split(char *line, char delim, char **f, int max)
                 while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
                     p++;
                 }
-                if (*p == '\0' || joined > 1 || (joined == 0 && (p - f[n - 1] < 8 || p - f[n - 1] > 10))) {
+                if (*p == '\0' || !dates || joined > 1 || (joined == 0 && (p - f[n - 1] < 8 || p - f[n - 1] > 10))) {
                     break; /* no date's length: nothing more to look at (every other field of a row) */
                 }
                 for (q = p; *q == ' ' || *q == '\t'; q++) {
@@ -347,6 +349,11 @@ static int split(char *line, char delim, char **f, int max)
         }
     }
     return n;
+}
+
+static int split(char *line, char delim, char **f, int max)
+{
+    return split_join(line, delim, f, max, 1);
 }
 
 int hx_split_fields(char *line, char delim, char **f, int max)
@@ -581,6 +588,9 @@ static int parse_datetime_ns(const char *s, int64_t *out)
         if (oh < 0 || oh > 23) {
             return -4;
         }
+        if (*p == ':' && p[1] == '\0') {
+            return -4; /* "+02:": the minutes left out after their colon */
+        }
         if (*p == ':') {
             p++;
         }
@@ -599,7 +609,9 @@ static int parse_datetime_ns(const char *s, int64_t *out)
     return 0;
 }
 
-#define DATETIME_FORM "YYYY-MM-DD hh:mm:ss[.f] with an optional T, Z or +hh:mm; or hh:mm:ss[.f]"
+#define DATETIME_FORM                                                                                          \
+    "YYYY-MM-DD hh:mm:ss[.f] with an optional T, Z or +hh:mm (month, day and hour in one digit or two; "       \
+    "hh.mm.ss after T); or hh:mm:ss[.f]"
 
 /* Time as text to integer ns, exactly for plain decimals: in seconds
  * (k = 9), ms (6), us (3) or ns (0), 10^k ns to the unit; the point moves
@@ -1206,16 +1218,17 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
          * message's own stamp (%time, bagpy's Time) */
         hx_name_unit_t ru;
         const int receive = m->ros && m->col[0] >= 0 && m->col[0] == hx_names_ros_receive(f, n, &ru);
-        char times[96] = "";
+        char times[160] = "";
         if (m->times > 1) {
-            snprintf(times, sizeof times, "; of %d time names, the first that names its unit read", m->times);
+            snprintf(times, sizeof times, "; of %d time names, the first that names its unit read%s", m->times,
+                     m->times_clock ? " (a clock's since 1970 only where no other is)" : "");
         }
         add_warn(r, "%s: header read as %s (%s%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros      ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them"
                  : m->sensorlog
-                     ? "SensorLog's names matched: the accelerometer in g with iOS's sign (z -1 g face up), read "
-                       "negated as the specific force; the rate in rad/s; the accelerometer's stamp in s"
+                     ? "SensorLog's names matched: the accelerometer with iOS's sign (z -1 g face up), read negated "
+                       "as the specific force"
                  : m->kalibr ? "Kalibr's IMU CSV names matched: the stamp in ns, omega in rad/s, alpha the "
                                "specific force in m/s^2, as Kalibr's bag format sets them"
                  : m->gforce ? "names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force"
@@ -2387,7 +2400,27 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                    : strchr(r->line, ';') != NULL  ? ';'
                                                    : ' ';
     }
-    n = split(r->line, r->delim, f, HX_MAX_COLS);
+    if (r->delim == ' ' && r->hdr_fields > 0 && r->date_join < 0) {
+        /* the first row: a date and its time are one field unless the
+         * header names them apart ("date time ax ...", two columns that
+         * read a time of day): the split that gives the header's count
+         * decides, for every row after */
+        char copy[HX_LINE_MAX];
+        int n1;
+        memcpy(copy, r->line, sizeof copy);
+        n1 = split_join(r->line, r->delim, f, HX_MAX_COLS, 1);
+        r->date_join = 1;
+        if (n1 != r->hdr_fields) {
+            char *g[HX_MAX_COLS];
+            char again[HX_LINE_MAX];
+            memcpy(again, copy, sizeof again);
+            if (split_join(again, r->delim, g, HX_MAX_COLS, 0) == r->hdr_fields) {
+                r->date_join = 0;
+            }
+        }
+        memcpy(r->line, copy, sizeof copy);
+    }
+    n = split_join(r->line, r->delim, f, HX_MAX_COLS, r->date_join != 0);
     r->nfields = n;
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
@@ -3034,6 +3067,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         snprintf(err, err_size, "%s: out of memory", path);
         return NULL;
     }
+    r->date_join = -1;
     copy_str(r->path, sizeof r->path, path);
     r->gz = gzopen(path, "rb");
     if (r->gz == NULL) {

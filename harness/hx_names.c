@@ -682,14 +682,16 @@ int hx_names_kalibr(char *const *f, int n)
  * three axes (m->negate); gyroRotation is CMGyroData's raw rate in rad/s,
  * right-handed as the specific force's axes, before motionRotationRate
  * (CoreMotion's fused, bias-corrected rate). The accelerometer's stamp
- * is the row's time. CoreMotion's user acceleration and gravity (gravity
- * apart), the logging time (a local date with " +0100") and the other
- * sensors' stamps are named as not read. The names without their unit
- * in parentheses, lower case. */
+ * is the row's time (the gyroscope's, then CoreMotion's, without it).
+ * CoreMotion's user acceleration and gravity (gravity apart), the logging
+ * time (a local date with " +0100") and the other sensors' stamps are
+ * named as not read. The names without their unit in parentheses, lower
+ * case; a unit in the parentheses that is read (hx_name_unit_of_text) and
+ * its quantity's is the one read, else the row's. */
 static const name_row_t k_sensorlog[] = {
     { "accelerometertimestamp_sincereboot", 0, 3, HX_UNIT_S },
-    { "gyrotimestamp_sincereboot", 0, 0, HX_UNIT_S },
-    { "motiontimestamp_sincereboot", 0, 0, HX_UNIT_S },
+    { "gyrotimestamp_sincereboot", 0, 2, HX_UNIT_S },
+    { "motiontimestamp_sincereboot", 0, 1, HX_UNIT_S },
     { "loggingtime", 0, 0, HX_UNIT_NONE },
     { "accelerometeraccelerationx", 1, 1, HX_UNIT_G },
     { "accelerometeraccelerationy", 2, 1, HX_UNIT_G },
@@ -714,12 +716,32 @@ static const name_row_t k_sensorlog[] = {
 static int sensorlog_row(const char *name)
 {
     char bare[64];
-    const size_t len = lower_bare(name, bare, sizeof bare);
+    size_t len = lower_bare(name, bare, sizeof bare);
     char *open = strchr(bare, '(');
     if (open != NULL && len > 0 && bare[len - 1] == ')') {
         *open = '\0';
+        len = (size_t)(open - bare);
+        while (len > 0 && (bare[len - 1] == ' ' || bare[len - 1] == '\t')) {
+            bare[--len] = '\0'; /* "accelerometerAccelerationX (G)" */
+        }
     }
     return row_exact(bare, k_sensorlog, sizeof k_sensorlog / sizeof k_sensorlog[0]);
+}
+
+/* The unit of key's column (the first candidate; 1 ax, 4 gx) as its
+ * parentheses name it, when read and of the key's quantity; else def. */
+static hx_name_unit_t sensorlog_unit(char *const *f, const hx_names_match_t *m, int key, hx_name_unit_t def)
+{
+    const char *open = m->ncand[key] > 0 ? strchr(f[m->cand[key][0]], '(') : NULL;
+    char text[32];
+    const char *close;
+    hx_name_unit_t u;
+    if (open == NULL || (close = strchr(open, ')')) == NULL || (size_t)(close - open - 1) >= sizeof text) {
+        return def;
+    }
+    snprintf(text, sizeof text, "%.*s", (int)(close - open - 1), open + 1);
+    u = hx_name_unit_of_text(text);
+    return u != HX_UNIT_NONE && unit_quantity(u) == (key <= 3 ? 1 : 2) ? u : def;
 }
 
 int hx_names_sensorlog(char *const *f, int n)
@@ -789,8 +811,8 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     } else if (hx_names_sensorlog(f, n)) {
         m->sensorlog = 1;
         rank_match(f, n, k_sensorlog, sensorlog_row, m);
-        m->unit[1] = HX_UNIT_G;
-        m->unit[2] = HX_UNIT_RPS;
+        m->unit[1] = sensorlog_unit(f, m, 1, HX_UNIT_G);
+        m->unit[2] = sensorlog_unit(f, m, 4, HX_UNIT_RPS);
         m->negate = 0x0e; /* ax..az: iOS's acceleration is the specific force's negative */
     }
     for (i = 0; i < n && !m->consensys && !m->ros && !m->kalibr && !m->sensorlog; i++) {
@@ -843,7 +865,13 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             }
         }
         if (best >= 0) {
-            m->times = m->ncand[0];
+            /* a clock's name beside them ("epoch (ms)"): a time name not
+             * read too, counted and named */
+            m->times = m->ncand[0] + (clocks ? 0 : nclock);
+            m->times_clock = !clocks && nclock > 0;
+            for (k = 0; !clocks && k < nclock && k < 3; k++) {
+                add_col(&m->nnear[0], m->near[0], clock[k]);
+            }
             m->cand[0][0] = best;
             m->ncand[0] = 1;
         }

@@ -131,6 +131,7 @@ typedef struct {
     int near[7][3];     /**< the first three of them */
     int times;          /**< the time names, when more than one and one names its unit: the first that
                              does is read, the others counted with t's near misses; else 0 */
+    int times_clock;    /**< 1: a clock's name (epoch, unix) among those times, not read beside the others */
     int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
     int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */

@@ -1905,6 +1905,7 @@ static void test_datetime_stamps(void **state)
         { "2024-05-01 12.00.00", form },  { "2024-05-01T12.00:00", form }, { "2024-05-01T12:00.00", form },
         { "2024-123-01 00:00:00", form }, { "2024--01 00:00:00", form },   { "2024-05-011 00:00:00", form },
         { "2024-05-01 12:00:00  +0200", form }, { "12:00:00 +0200", form }, { "2024-05-01 12:00:00 Z", form },
+        { "2024-05-01T12:00:00+02:", form },
     };
     size_t i;
     (void)state;
@@ -1974,6 +1975,28 @@ static void test_datetime_stamps(void **state)
             }
             if (want[i] == 0.0 && r.n != 0) { /* "+12:3": no number, no offset: the row refused */
                 fail_msg("after %s: read, n %ld", after[i], (long)r.n);
+            }
+            unlink(p);
+        }
+    }
+    {
+        /* blank-separated with the date and the time named apart ("date
+         * time ax ..."): not joined (the first row's split that gives the
+         * header's count decides), the time of day read as the time */
+        static const char *const dates[] = { "2023-3-21", "2023-03-21" };
+        char p[256], text[256];
+        readall_t r;
+        for (i = 0; i < sizeof dates / sizeof dates[0]; i++) {
+            tmp_path(p, sizeof p, ".csv");
+            snprintf(text, sizeof text,
+                     "date time ax ay az gx gy gz\n%s 09:05:23.25 0.5 0.2 9.8 0.1 0.2 0.3\n"
+                     "%s 09:05:23.26 0.5 0.2 9.8 0.1 0.2 0.3\n",
+                     dates[i], dates[i]);
+            write_text(p, text);
+            assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+            if (r.end != FNAV_END || r.n != 2 || r.s[0].t_ns != 32723250000000LL ||
+                r.s[1].t_ns != 32723260000000LL || (float)r.s[0].accel_mps2[0] != 0.5f) {
+                fail_msg("date and time apart (%s): end %d, n %ld: %s", dates[i], (int)r.end, (long)r.n, r.err);
             }
             unlink(p);
         }
@@ -3663,6 +3686,14 @@ static void test_names_match(void **state)
           "--columns t=accelerometerTimestamp_sinceReboot,ax=-accelerometerAccelerationX,"
           "ay=-accelerometerAccelerationY,az=-accelerometerAccelerationZ,gx=motionRotationRateX,"
           "gy=motionRotationRateY,gz=motionRotationRateZ --units time=s,accel=g,gyro=rad/s" },
+        /* a blank before the unit; a unit given that is read; without the
+         * accelerometer's stamp, the gyroscope's */
+        { "gyroTimestamp_sinceReboot (s),accelerometerAccelerationX (m/s^2),accelerometerAccelerationY (m/s^2),"
+          "accelerometerAccelerationZ (m/s^2),gyroRotationX (deg/s),gyroRotationY (deg/s),gyroRotationZ (deg/s)",
+          1, { 0, 1, 2, 3, 4, 5, 6 }, { HX_UNIT_S, HX_UNIT_MPS2, HX_UNIT_DPS },
+          "--columns 't=gyroTimestamp_sinceReboot (s),ax=-accelerometerAccelerationX (m/s^2),"
+          "ay=-accelerometerAccelerationY (m/s^2),az=-accelerometerAccelerationZ (m/s^2),gx=gyroRotationX (deg/s),"
+          "gy=gyroRotationY (deg/s),gz=gyroRotationZ (deg/s)' --units time=s,accel=m/s2,gyro=deg/s" },
         { "accelerometerTimestamp_sinceReboot(s),accelerometerAccelerationX(G),accelerometerAccelerationY(G),"
           "accelerometerAccelerationZ(G),gyro_x,gyro_y,gyro_z",
           0, { -1, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 }, "--columns gx=gyro_x,gy=gyro_y,gz=gyro_z" },
@@ -3719,6 +3750,14 @@ static void test_names_match(void **state)
         assert_int_equal(m.times, 5);
         assert_int_equal(m.col[0], 1);
         assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "t, timestamp (us), elapsed (s), ...");
+        /* a clock's name beside them: not read, counted and named */
+        snprintf(text, sizeof text, "epoch (ms),time (-13:00),elapsed (s),ax,ay,az,gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.col[0], 2);
+        assert_int_equal(m.times, 3);
+        assert_int_equal(m.times_clock, 1);
+        assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "time (-13:00), epoch (ms)");
         snprintf(text, sizeof text, "time,timestamp,ax,ay,az,gx,gy,gz");
         n = split_header(text, f, 16);
         assert_int_equal(hx_names_match(f, n, &m), 0);

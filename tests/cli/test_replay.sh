@@ -527,7 +527,7 @@ expect_out "^sensor      Kalibr IMU CSV$" "kalibr: info names the format"
 # the sensorlog variant: the warning names the negated accelerometer, the
 # map it prints reads the same samples; info names the app
 expect_exit 0 "info on the sensorlog variant" "$H" info "$T/m_sensorlog.csv"
-expect_err "m_sensorlog.csv: header read as --columns 't=accelerometerTimestamp_sinceReboot(s),ax=-accelerometerAccelerationX(G),ay=-accelerometerAccelerationY(G),az=-accelerometerAccelerationZ(G),gx=gyroRotationX(rad/s),gy=gyroRotationY(rad/s),gz=gyroRotationZ(rad/s)' --units accel=g (SensorLog's names matched: the accelerometer in g with iOS's sign (z -1 g face up), read negated as the specific force; the rate in rad/s; the accelerometer's stamp in s; not read: loggingTime(txt), gyroTimestamp_sinceReboot(s), motionTimestamp_sinceReboot(s), motionUserAccelerationX(G), ...; give --columns to choose otherwise)$" \
+expect_err "m_sensorlog.csv: header read as --columns 't=accelerometerTimestamp_sinceReboot(s),ax=-accelerometerAccelerationX(G),ay=-accelerometerAccelerationY(G),az=-accelerometerAccelerationZ(G),gx=gyroRotationX(rad/s),gy=gyroRotationY(rad/s),gz=gyroRotationZ(rad/s)' --units accel=g (SensorLog's names matched: the accelerometer with iOS's sign (z -1 g face up), read negated as the specific force; not read: loggingTime(txt), gyroTimestamp_sinceReboot(s), motionTimestamp_sinceReboot(s), motionUserAccelerationX(G), ...; give --columns to choose otherwise)$" \
     "sensorlog: the warning says how the names are read"
 expect_out "^sensor      SensorLog (iOS)$" "sensorlog: info names the app"
 expect_exit 0 "the sensorlog variant by the printed --columns" "$H" replay "$T/m_sensorlog.csv" --out "$T/m_sl_cols.csv" --quiet \
