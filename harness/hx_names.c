@@ -350,6 +350,13 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     } else if (n == 1 && strcmp(w[0], "elapsed") == 0) {
         key = 0;
         c->clock = -1; /* from a start: MetaWear's "elapsed (s)" from each file's first sample */
+    } else if (n == 2 && strcmp(w[0], "sensor") == 0 &&
+               (strcmp(w[1], "timestamp") == 0 || strcmp(w[1], "time") == 0 || strcmp(w[1], "ts") == 0)) {
+        /* the sensor's own clock: Polar Sensor Logger's "sensor timestamp
+         * [ns]" (ns since 2000-01-01, the device's, which its ACC and GYRO
+         * files share), beside its "Phone timestamp" (the phone's, per
+         * packet: not a time name, named as not read) */
+        key = 0;
     } else if (n == 3 && strcmp(w[0], "time") == 0 && strcmp(w[1], "since") == 0 && strcmp(w[2], "start") == 0) {
         key = 0; /* AndroSensor's "Time since start in ms" */
         c->clock = -1;

@@ -47,6 +47,8 @@ typedef struct {
  *  alone or with time, timestamp or ts: a clock's, c->clock 1, which
  *  hx_names_match reads only where no other time name is; time since
  *  start, AndroSensor's, "in" before a last word's unit dropped with it;
+ *  sensor timestamp, sensor time, sensor ts: a sensor's own clock, Polar
+ *  Sensor Logger's;
  *  millis in ms and
  *  micros in us unless a unit is given), or a stem and an axis x, y, z, the
  *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,

@@ -3382,6 +3382,8 @@ static void test_name_classify(void **state)
             /* AndroSensor's; "in" before a last word's unit */
             { "Time since start in ms ", HX_UNIT_MS, -1 }, { "time since start", HX_UNIT_NONE, -1 },
             { "time in us", HX_UNIT_US, 0 }, { "Timestamp in s", HX_UNIT_S, 0 },
+            /* the sensor's own clock (Polar Sensor Logger's) */
+            { "sensor timestamp [ns]", HX_UNIT_NS, 0 }, { "Sensor Time (ms)", HX_UNIT_MS, 0 },
         };
         for (i = 0; i < sizeof t / sizeof t[0]; i++) {
             hx_name_class_t c;
@@ -3393,6 +3395,8 @@ static void test_name_classify(void **state)
         /* a word more is not a clock's name; an axis name is none; "in"
          * goes only with a unit after it */
         assert_int_equal(hx_name_classify("epoch count", &c0), HX_NAME_OTHER);
+        /* the phone's time beside Polar's sensor clock: not a time name */
+        assert_int_equal(hx_name_classify("Phone timestamp", &c0), HX_NAME_NEAR);
         assert_int_equal(hx_name_classify("time since boot in ms", &c0), HX_NAME_NEAR);
         assert_int_equal(hx_name_classify("time in", &c0), HX_NAME_NEAR);
         assert_int_equal(hx_name_classify("ACCELEROMETER X in g", &c0), HX_NAME_MATCH);

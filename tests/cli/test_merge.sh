@@ -257,6 +257,44 @@ sys.exit(0 if len(m) == len(want_t) and (got_t == want_t).all() and dg < 2e-6 an
 PY
 ); then pass "Sensor Logger: numpy's interpolation ($msg)"; else fail "Sensor Logger interpolation: $msg"; fi
 
+# --- Polar Sensor Logger's ACC and GYRO files (Verity Sense, H10): semicolons,
+# the phone's time per packet (a date: not read), the sensor's own clock in
+# ns since 2000 (read: both files share it), mg and deg/s; the gyroscope
+# begun 3 samples after the accelerometer. Before, "the header names no
+# time column"
+/usr/bin/python3 - "$T" <<'PY' || fail "writing the Polar pair"
+import sys, numpy as np
+T = sys.argv[1]
+d = np.genfromtxt(T + '/ref.csv', delimiter=',', names=True)
+ns = 726849693410011776 + np.round((d['t'] - d['t'][0]) * 1e9).astype(np.int64)
+def polar(path, unit, cols, first):
+    with open(path, 'w') as f:
+        f.write('Phone timestamp;sensor timestamp [ns];X [%s];Y [%s];Z [%s]\n' % (unit, unit, unit))
+        for k in range(first, len(ns)):
+            f.write('2023-01-12T14:41:%06.3f;%d;%s\n' % (33.466 + k * 0.0025 % 20, ns[k], ';'.join('%.6f' % v for v in cols[k])))
+polar(T + '/polar_acc.txt', 'mg', np.column_stack([d['ax'], d['ay'], d['az']]) / 9.80665e-3, 0)
+polar(T + '/polar_gyr.txt', 'dps', np.degrees(np.column_stack([d['gx'], d['gy'], d['gz']])), 3)
+PY
+expect_exit 0 "merge a Polar Sensor Logger pair" "$H" merge "$T/polar_acc.txt" "$T/polar_gyr.txt" "$T/polar.csv"
+expect_err "polar_acc.txt: .* time 'sensor timestamp \[ns\]' in ns, x, y, z 'X \[mg\]', 'Y \[mg\]', 'Z \[mg\]' in mg$" \
+    "Polar: the sensor's clock read, not the phone's, in mg"
+expect_err "polar_gyr.txt: .* time 'sensor timestamp \[ns\]' in ns, .* in deg/s$" "Polar's gyroscope: the sensor's clock, deg/s"
+if msg=$(/usr/bin/python3 - "$T/ref.csv" "$T/polar.csv" <<'PY'
+import sys, numpy as np
+r, m = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+r = r[3:]  # the accelerometer's samples within the gyroscope's span
+n_ok = len(r) == len(m)
+da = max(np.abs(r[k] - m[k]).max() for k in ('ax', 'ay', 'az')) if n_ok else np.inf
+dg = max(np.abs(r[k] - m[k]).max() for k in ('gx', 'gy', 'gz')) if n_ok else np.inf
+# the stamps as text, to the ns (a float64 of 7.3e8 s holds 1.2e-7 s)
+ns = [np.array([int(l.split(',')[0].replace('.', '')) for l in open(f).read().split()[1:]], np.int64) for f in sys.argv[1:3]]
+tr, tm = ns[0][3:], ns[1]
+dt = np.abs((tr - tr[0]) - (tm - tm[0])).max() if n_ok else -1
+print('%d samples (the walk\'s from the gyroscope\'s first: %d), accel %.3g m/s^2, gyro %.3g rad/s, stamps %d ns off' % (len(m), len(r), da, dg, dt))
+sys.exit(0 if n_ok and da < 2e-5 and dg < 2e-6 and dt == 0 else 1)
+PY
+); then pass "Polar pair: the walk's values ($msg)"; else fail "Polar pair: $msg"; fi
+
 # --- the other commands refuse one sensor's file and name merge
 expect_exit 1 "info on the gyroscope's file" "$H" info "$T/phyphox.csv"
 expect_err "phyphox.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\]; the gyroscope's alone (one sensor's file? bin/harness merge ACC GYRO OUT" \

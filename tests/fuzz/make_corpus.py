@@ -255,6 +255,8 @@ gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
         b'2023-11-14T09:13:20.030,0.005,0.31,-0.66,0.09\n')
     put('merge', 'metabase_dotted_gyr', b'\x01time (-13:00),elapsed (s),x-axis (deg/s),y-axis (deg/s),z-axis (deg/s)\n'
         b'2023-11-14T9.13.20.025,0.000,0.10,-0.41,0.01\n2023-11-14T9.13.20.027,0.002,0.22,-0.59,0.07\n')
+    put('merge', 'polar_acc', b'\x00Phone timestamp;sensor timestamp [ns];X [mg];Y [mg];Z [mg]\n'
+        b'2023-01-12T14:41:33.466;726849693410011776;-12;25;1001\n2023-01-12T14:41:33.476;726849693420011776;-11;24;1002\n')
     put('merge', 'phyphox_semi_gyr', b'\x01"Time (s)";"Gyroscope x (rad/s)";"Gyroscope y (rad/s)";"Gyroscope z (rad/s)"\n'
         b'0,000;0,5;-0,25;0,125\n0,010;0,6;-0,35;0,225\n0,020;0,7;-0,45;0,325\n')
     put('merge', 'slog_acc_ns', b'\x03time,seconds_elapsed,z,y,x\n1733300000000000000,0.0,9.8,0.1,0.2\n'
