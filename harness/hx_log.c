@@ -2406,19 +2406,15 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
          * read a time of day): the split that gives the header's count
          * decides, for every row after */
         char copy[HX_LINE_MAX];
-        int n1;
-        memcpy(copy, r->line, sizeof copy);
-        n1 = split_join(r->line, r->delim, f, HX_MAX_COLS, 1);
-        r->date_join = 1;
-        if (n1 != r->hdr_fields) {
-            char *g[HX_MAX_COLS];
-            char again[HX_LINE_MAX];
-            memcpy(again, copy, sizeof again);
-            if (split_join(again, r->delim, g, HX_MAX_COLS, 0) == r->hdr_fields) {
-                r->date_join = 0;
-            }
+        const size_t len = strlen(r->line) + 1;
+        memcpy(copy, r->line, len);
+        r->date_join = split_join(r->line, r->delim, f, HX_MAX_COLS, 1) == r->hdr_fields;
+        memcpy(r->line, copy, len);
+        if (!r->date_join) {
+            /* joined, the count is not the header's: apart, it may be */
+            r->date_join = split_join(r->line, r->delim, f, HX_MAX_COLS, 0) != r->hdr_fields;
+            memcpy(r->line, copy, len);
         }
-        memcpy(r->line, copy, sizeof copy);
     }
     n = split_join(r->line, r->delim, f, HX_MAX_COLS, r->date_join != 0);
     r->nfields = n;
