@@ -935,6 +935,11 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
+/* A log shorter than this cannot hold a stride (a gait cycle lasts about a
+ * second) after the alignment's still period: the slow-rate remedy does
+ * not name a finer time unit that would make the log so short (a walk
+ * resampled to 5 Hz is no 5 kHz log of 65 ms). */
+#define HX_UNIT_MIN_SPAN_S 1.0
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
 /* A walking foot turns at several rad/s in each swing: the largest |w| on
  * one axis is 6.2-24 rad/s over the shared walks that show a walk (hx_walk_t;
@@ -1148,7 +1153,8 @@ const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_m
 }
 
 static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                         const hx_csv_layout_t *csv, double acc_mean, int walks, char *msg, size_t msg_size)
+                         double span_s, const hx_csv_layout_t *csv, double acc_mean, int walks, char *msg,
+                         size_t msg_size)
 {
     /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
@@ -1240,7 +1246,17 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
          * hx_time_unit_fix, as the slow-log hint of info, allan and psd) */
         const int k = csv != NULL ? csv->time_digits : 9; /* the unit the stamps were read in */
         hx_time_fix_t fix;
-        if (hx_time_unit_fix(rate_hz, k, &fix)) {
+        if (hx_time_unit_fix(rate_hz, k, &fix) && span_s > 0.0 && span_s * rate_hz / fix.rate_hz < HX_UNIT_MIN_SPAN_S) {
+            /* in the finer unit the log would be over before a stride:
+             * the stamps are what they say, the log too slow (a walk
+             * resampled to 5 Hz was sent to --units time=ms, which read
+             * it as 65 ms at 5 kHz and found no still period) */
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more, and the "
+                         "stamps are in %s (in %s the %.4g s log would last %.3g s, too short for a stride): the log "
+                         "is too slow to navigate (record a walking foot at 100 Hz or more)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, fix.name, span_s,
+                         span_s * rate_hz / fix.rate_hz);
+        } else if (hx_time_unit_fix(rate_hz, k, &fix)) {
             /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
              * logger's counter), which --input-rate serves without the
              * column */
@@ -1293,7 +1309,7 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, int walks, char *msg, size_t msg_size)
 {
-    return units_problem(f_rest_mps2, gravity_mps2, gyro_max_rps, rate_hz, csv, 0, walks, msg, msg_size);
+    return units_problem(f_rest_mps2, gravity_mps2, gyro_max_rps, rate_hz, 0.0, csv, 0, walks, msg, msg_size);
 }
 
 /* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
@@ -1400,7 +1416,8 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                       : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
                  fix, msq || mg || ug ? ")" : "");
     }
-    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_mean, walks, msg, sizeof msg);
+    bad = units_problem(fn, g, gyro_max_rps, rate, n_in > 1 ? 1e-9 * (double)(t_last_ns - t_first_ns) : 0.0, csv,
+                        acc_mean, walks, msg, sizeof msg);
     if (rep[0] != '\0') {
         size_t len = strlen(msg);
         if (len < sizeof msg) {
