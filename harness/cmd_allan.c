@@ -1449,7 +1449,12 @@ static void print_params(const run_t *R)
                    "of these\nchannels are no model of the sensor. %s instead the paper's sigma_v (the ADEV at 1 "
                    "s) and the\nGauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / "
                    "0.6174: the true T may be longer; docs/allan.md):\n",
-                   R->is_series ? "A log's --profile would hold" : "--profile holds");
+                   R->is_series ? "A log's --profile would hold"
+                   /* refused at the end for a log that moves or is not
+                    * in SI units: no "holds" of a file not written */
+                   : (R->units_bad || R->moving || R->win_moving > 0) ? "Of a static log in SI units, --profile "
+                                                                        "would hold"
+                                                                      : "--profile holds");
         }
         printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%s s), sigma_bias %.3g", ch->label, ch->unit,
                R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, fmt_s(b1, sizeof b1, m.gm_tau_s),

@@ -84,6 +84,12 @@ for o in --out --json --plot --profile; do
     if [ ! -s "$T/out" ]; then pass "unwritable $o: nothing computed first"; else fail "unwritable $o: the tables were printed first"; fi
 done
 
+# a walk: the profile is refused at the end, so the note under the table says what a static log's profile would
+# hold, not what "--profile holds" (it read so over the error 'profile not written'; a review)
+expect_exit 1 "a walk: no profile" "$H" allan vectors/walk.bin --no-sim --profile "$T/walk.profile"
+expect_out "Of a static log in SI units, --profile would hold instead" "a walk: the note says what a profile would hold"
+if grep -q -- "--profile holds" "$T/out"; then fail "a walk: '--profile holds' over a profile not written"; else
+    pass "a walk: no '--profile holds'"; fi
 # a log too short for an identification: tables and plot still written, no profile, exit 1
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
