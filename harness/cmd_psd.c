@@ -17,6 +17,11 @@
 
 #define CMD "psd"
 #define NSENS_NFFT 5
+/* Fewer Welch segments than this are warned: each bin then scatters by
+ * more than a third of its value (1/sqrt(K) at least). The paper's
+ * 64-sample segments give hundreds on any walk; so few come of an --nfft
+ * near the log's length. */
+#define PSD_FEW_SEGMENTS 8
 #define NDC 5
 
 static const hx_opt_t k_opts[] = {
@@ -871,6 +876,18 @@ int hx_cmd_psd(int argc, char **argv)
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }
+    if (res.nseg < PSD_FEW_SEGMENTS) {
+        /* Welch's average of K periodograms has nu <= 2K degrees of
+         * freedom (2K without overlap; the overlap's correlation lowers
+         * it), so each bin's relative sd is at least 1/sqrt(K): 100 % for
+         * one segment, a single periodogram (Percival & Walden 1993,
+         * 6.17) */
+        hx_warn(CMD, "%s: %u segment%s of %u samples: each PSD bin scatters by %s%.0f %% of its value (Welch averages "
+                     "its segments' periodograms); the 95 %% band, from the cumulative power, is steadier; a "
+                     "shorter --nfft or a longer log gives %d segments or more",
+                a.pos[0], (unsigned)res.nseg, res.nseg == 1 ? "" : "s", (unsigned)st.wc.nfft,
+                res.nseg == 1 ? "" : "at least ", 100.0 / sqrt((double)res.nseg), PSD_FEW_SEGMENTS);
+    }
     {
         /* a log whose format names no sensor (a CSV's "unknown"): the line
          * names the format, as allan's and info's do */
@@ -892,14 +909,14 @@ int hx_cmd_psd(int argc, char **argv)
             snprintf(rndt, sizeof rndt, "not rounded (--round 0)");
         }
         snprintf(title, sizeof title,
-                 "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
+                 "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segment%s, resolution %.3g Hz\n"
                  "Criterion (paper II.B): per axis, the band from 0 Hz holding %g %% of the total power of the "
                  "one-sided PSD of the channel as logged (sensor axes);\n"
                  "  DC: %s;\n"
                  "  sampling frequency = 2 x band, %s; a group needs its widest axis",
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
-                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rndt);
+                 k_dc_names[dc_mode], (unsigned)res.nseg, res.nseg == 1 ? "" : "s", res.df, 100.0 * thr, dct, rndt);
         print_result(title, &res, &bc, rate, dc_mode == 0);
     }
     {

@@ -25,6 +25,16 @@ expect_err "spec-nfft must be a power of two" "the spectrogram's segment length 
 # a tiny CSV in the interchange format: a 100 Hz tone at 1000 Hz + gravity on z
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
      printf "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", t, s, 0.5 * s, -9.81 + s, 0.1 * s, 0.1 * s, 0.1 * s } }' >"$T/tone.csv"
+# few Welch segments: each bin's scatter said (1/sqrt(K) at least; 100 % for one periodogram), and the title's
+# count in the singular ('1 segments')
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 3; for (i = 0; i < 5000; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.3f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 250, r, -r / 2, 9.81 + r / 3, r / 10, -r / 9, r / 8 } }' >"$T/few.csv"
+expect_exit 0 "one Welch segment" "$H" psd "$T/few.csv" --nfft 4096
+expect_err "few.csv: 1 segment of 4096 samples: each PSD bin scatters by 100 % of its value" "one segment: its scatter warned"
+expect_out "dc segment, 1 segment, resolution" "one segment: singular in the title"
+expect_exit 0 "three Welch segments" "$H" psd "$T/few.csv" --nfft 2048
+expect_err "few.csv: 3 segments of 2048 samples: each PSD bin scatters by at least 58 % of its value" "three segments: at least 1/sqrt(3)"
+expect_exit 0 "eighteen Welch segments" "$H" psd "$T/few.csv" --nfft 512
+if grep -q "scatters" "$T/err"; then fail "18 segments warned as few"; else pass "18 segments: no warning"; fi
 expect_exit 0 "tone" "$H" psd "$T/tone.csv" --json "$T/tone.json" --dc global
 # all power at 100 Hz, 15.6 Hz bins: the Hamming main lobe spreads it over +-2 bins, so 95 % of
 # the power lies below 100 + 31.25 Hz and above 100 Hz; fs 250 Hz (multiples of 50)
