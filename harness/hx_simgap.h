@@ -737,6 +737,10 @@ typedef struct {
     long n_dup[SG_NSEG], n_drop[SG_NSEG], n_int[SG_NSEG];
     double jit_sd[SG_NSEG];   /**< sd of interval - nominal over regular intervals, s */
     double jit_kurt[SG_NSEG]; /**< their kurtosis (3 when too few): the log-variance tests' spread */
+    /** the drops and duplicates the jitter's own Gaussian tails make
+     *  expected (intervals beyond 1.5 or under 0.1 nominal periods, from
+     *  the robust spread of the regular intervals): the counts' null */
+    double tail_drop[SG_NSEG], tail_dup[SG_NSEG];
     double z[SG_NSEG][SG_TIM_NKIND];
     int significant;
     double dup_prob, drop_prob, stamp_s;   /**< fitted on the fit segment */

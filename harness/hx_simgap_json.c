@@ -408,6 +408,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON_AddNumberToObject(s, "duplicated", (double)r->tim.n_dup[k]);
             cJSON_AddNumberToObject(s, "dropped", (double)r->tim.n_drop[k]);
             cJSON_AddNumberToObject(s, "intervals", (double)r->tim.n_int[k]);
+            hx_json_num(s, "dropped_jitter_expected", r->tim.tail_drop[k]);
+            hx_json_num(s, "duplicated_jitter_expected", r->tim.tail_dup[k]);
             hx_json_num(s, "interval_sd_s", r->tim.jit_sd[k]);
             for (d = 0; d < SG_TIM_NKIND; d++) {
                 hx_json_num(z, nm[d], r->tim.z[k][d]);

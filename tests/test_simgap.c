@@ -977,6 +977,62 @@ static void test_timing_dropout_after(void **state)
     assert_false(tm.open[SG_TIM_DROP]);
 }
 
+/* A clock whose jitter is wide against its period: stamps k T + e_k,
+ * e_k ~ N(0, 1 ms) at 200 Hz (T = 5 ms), so each interval is T + N(0, 2 ms^2)
+ * and 3.85 % of them (Q(2.5 / 1.414)) pass the drop threshold of 1.5 T: the
+ * jitter's own tail, not lost samples. They are expected from the
+ * intervals' quartiles (sg_timing_t.tail_drop, within 10 % of the normal
+ * tail n Q(0.5 T / (sqrt 2 sigma))), and neither drops nor duplicates are
+ * selected; judged against an ideal clock's 0 they were, at the cap of
+ * 40 sigma (a walk jittered so read "dropout (prob 0.0367)"). With a
+ * narrower jitter (0.4 ms: a tail of 2e-6) and one sample in 50 lost,
+ * the drops are found and their rate fitted as on an exact grid. */
+static void test_timing_jitter_tails(void **state)
+{
+    enum { N = 20000 };
+    static int64_t t[N];
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    fnav_rng_t rng;
+    double tail1;
+    long n1;
+    const double T = 5e6, sd = 1e6, expect = (double)(N - 1) * 0.5 * erfc(0.5 * T / (sqrt(2.0) * sd) / sqrt(2.0));
+    long k, j = 0;
+    (void)state;
+    memset(&lg, 0, sizeof lg);
+    fnav_rng_seed(&rng, 17u, 5u);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)llround((double)k * T + sd * (double)fnav_rng_gauss(&rng));
+        if (k > 0 && t[k] <= t[k - 1]) {
+            t[k] = t[k - 1] + 1; /* a clock does not step back */
+        }
+    }
+    lg.n = (size_t)N;
+    lg.t_ns = t;
+    sg_segs_split(N, 0.6, 1, &segs);
+    sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
+    tail1 = tm.tail_drop[SG_FULL];
+    n1 = tm.n_drop[SG_FULL];
+    assert_true(n1 > 500); /* the tail is there */
+    FNAV_ASSERT_CLOSE(tm.tail_drop[SG_FULL], expect, 0.0, 0.1);
+    assert_false(tm.sel[SG_TIM_DROP]);
+    assert_false(tm.sel[SG_TIM_DUP]);
+    assert_true(tm.sel[SG_TIM_JITTER]);
+    /* narrower jitter, one sample in 50 lost */
+    for (k = 0; j < N; k++) {
+        if (k % 50 != 49) {
+            t[j++] = (int64_t)llround((double)k * T + 0.4e6 * (double)fnav_rng_gauss(&rng));
+        }
+    }
+    sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
+    fprintf(stderr, "jitter tails: 1 ms: %.1f drops expected (normal tail %.1f) of %ld counted; 0.4 ms: %.3f\n",
+            tail1, expect, n1, tm.tail_drop[SG_FULL]);
+    assert_true(tm.tail_drop[SG_FULL] < 1.0);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    FNAV_ASSERT_CLOSE(tm.drop_prob, 0.02, 0.0, 0.05);
+}
+
 /* The special estimators' evidence on a sandwich split's fit segment (two
  * blocks; docs/simgap.md, section 4, step 1). The lattice score of the
  * segment is the blocks' normal scores combined as Stouffer's
@@ -3524,6 +3580,7 @@ int main(void)
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_timing_jitter_off_rate),
         cmocka_unit_test(test_timing_dropout_after),
+        cmocka_unit_test(test_timing_jitter_tails),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
         cmocka_unit_test(test_explained_golden),
