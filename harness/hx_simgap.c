@@ -180,9 +180,9 @@ static double logvar_se(double kurt, long n)
  * sample walk that lost none. m and s come from the median and the
  * quartiles of every interval's x = dt - T (s = IQR / 1.349), which a few
  * per cent of drops or duplicates hardly move, and neither do the
- * thresholds: the regular intervals' plain sd, or their median absolute
- * deviation, cut at 1.5 T, came out 7 % short on that walk, and left a
- * quarter of its tail counted as drops. Expected counts n_int x P(tail);
+ * thresholds: the regular intervals' plain sd and their median absolute
+ * deviation, cut at 1.5 T, came out 9 % and 7 % short on that walk (by the
+ * latter a quarter of its tail still counted as drops). Expected counts n_int x P(tail);
  * 0 without a spread. A clock whose jitter is small against T (every
  * shared walk's: microseconds against milliseconds) expects none. */
 static void jitter_tails(const hx_log_t *lg, const sg_segs_t *segs, int g, double T, long n_int, double *drop,
