@@ -935,10 +935,11 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
-/* A log shorter than this cannot hold a stride (a gait cycle lasts about a
- * second) after the alignment's still period: the slow-rate remedy does
- * not name a finer time unit that would make the log so short (a walk
- * resampled to 5 Hz is no 5 kHz log of 65 ms). */
+/* A log shorter than this in the finer unit cannot hold a stride (a gait
+ * cycle lasts about a second) after the alignment's still period: the
+ * slow-rate remedy does not name a finer time unit that would make the
+ * log so short (a walk resampled to 5 Hz is no 5 kHz log of 65 ms). A
+ * longer slow log is judged by its motion instead (units_problem). */
 #define HX_UNIT_MIN_SPAN_S 1.0
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
 /* A walking foot turns at several rad/s in each swing: the largest |w| on
@@ -1246,16 +1247,29 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
          * hx_time_unit_fix, as the slow-log hint of info, allan and psd) */
         const int k = csv != NULL ? csv->time_digits : 9; /* the unit the stamps were read in */
         hx_time_fix_t fix;
-        if (hx_time_unit_fix(rate_hz, k, &fix) && span_s > 0.0 && span_s * rate_hz / fix.rate_hz < HX_UNIT_MIN_SPAN_S) {
-            /* in the finer unit the log would be over before a stride:
-             * the stamps are what they say, the log too slow (a walk
+        if (hx_time_unit_fix(rate_hz, k, &fix) && span_s > 0.0 &&
+            (span_s * rate_hz / fix.rate_hz < HX_UNIT_MIN_SPAN_S || walks)) {
+            /* in the finer unit the log would be over before a stride, or
+             * it walks as read (|f| spreads within its seconds, which a
+             * log in ms read as s, one sample to a second, cannot): the
+             * stamps are what they say, the log too slow (a walk
              * resampled to 5 Hz was sent to --units time=ms, which read
-             * it as 65 ms at 5 kHz and found no still period) */
+             * it as 65 ms at 5 kHz and found no still period). The walk
+             * test needs 10 samples a second (HX_WALK_WINDOW_MIN_N): a
+             * walk under 10 Hz and over 1000 s still gets the ms remedy */
+            char why[160];
+            if (span_s * rate_hz / fix.rate_hz < HX_UNIT_MIN_SPAN_S) {
+                snprintf(why, sizeof why, "in %s the %.4g s log would last %.3g s, too short for a walk", fix.name,
+                         span_s, span_s * rate_hz / fix.rate_hz);
+            } else {
+                snprintf(why, sizeof why, "it walks as read, |f| varying within its seconds, which %s read as %s, "
+                                          "a sample to a second, could not",
+                         fix.name, fix.read);
+            }
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more, and the "
-                         "stamps are in %s (in %s the %.4g s log would last %.3g s, too short for a stride): the log "
-                         "is too slow to navigate (record a walking foot at 100 Hz or more)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, fix.name, span_s,
-                         span_s * rate_hz / fix.rate_hz);
+                         "stamps are in %s (%s): the log is too slow to navigate (record a walking foot at 100 Hz or "
+                         "more)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, why);
         } else if (hx_time_unit_fix(rate_hz, k, &fix)) {
             /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
              * logger's counter), which --input-rate serves without the

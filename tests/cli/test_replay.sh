@@ -1101,14 +1101,20 @@ expect_exit 0 "the remedy followed: g, deg/s and ms read with --units time=ms,ac
     "$T/in_gdegms.csv" --quiet --units time=ms,accel=g,gyro=deg/s
 if grep -q "units\|m/s^2\|rad/s" "$T/err"; then fail "the remedy followed: a unit still named"; cat "$T/err"; else
     pass "the remedy followed: no unit named"; fi
-# a walk truly at 5 Hz (resampled so by convert): the stamps are seconds, and in milliseconds the log would last
-# 66 ms, no stride: the remedy is no unit but a faster recording (it read 'they look like milliseconds: give
+# a walk truly at 5 Hz (resampled so by convert): the stamps are seconds, and in milliseconds the 11.8 s log would
+# last 12 ms, no walk: the remedy is no unit but a faster recording (it read 'they look like milliseconds: give
 # --units time=ms', which read the log at 5 kHz and found no still period)
 expect_exit 0 "a walk resampled to 5 Hz" "$H" convert vectors/nav/golden/gx2_walk2.csv "$T/slow5.csv" --rate 5
 expect_exit 1 "a 5 Hz walk" "$H" replay "$T/slow5.csv" --quiet
-expect_err "the samples are 0.2 s apart (5 Hz); a foot-mounted IMU needs 20 Hz or more, and the stamps are in seconds (in milliseconds the .* s log would last 0.0.* s, too short for a stride): the log is too slow to navigate" \
+expect_err "the samples are 0.2 s apart (5 Hz); a foot-mounted IMU needs 20 Hz or more, and the stamps are in seconds (in milliseconds the .* s log would last 0.0.* s, too short for a walk): the log is too slow to navigate" \
     "a 5 Hz walk: too slow, not milliseconds"
 if grep -q "time=ms" "$T/err"; then fail "a 5 Hz walk: --units time=ms offered"; else pass "a 5 Hz walk: no unit offered"; fi
+# ... and a long one (1200 s at 15 Hz: 1.2 s in milliseconds, long enough for a stride) by its motion: it walks as
+# read, which a log in milliseconds read as seconds cannot (a review found it sent to --units time=ms)
+expect_exit 0 "a 1200 s walk at 15 Hz" "$H" sim --rate 15 --duration 1200 --out "$T/slow15.csv"
+expect_exit 1 "a 15 Hz walk of 1200 s" "$H" replay "$T/slow15.csv" --quiet
+expect_err "and the stamps are in seconds (it walks as read, |f| varying within its seconds, which milliseconds read as seconds, a sample to a second, could not): the log is too slow to navigate" \
+    "a long 15 Hz walk: too slow, by its motion"
 # a file already in seconds, m/s^2 and rad/s read with --units time=ms: no item to give, the --units given is the
 # mistake; the remedy must not read "give --units " with nothing after it
 expect_exit 1 "seconds read with --units time=ms" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units time=ms
