@@ -156,9 +156,11 @@ static cons_t consistency(const hx_mc_var_t *v, int g, int runs)
  * average inside the band can hide bins far outside on both sides. */
 #define MC_CONSISTENT_FRAC 0.8
 
-/* Outside it, each side is judged by the same margin: a consistent filter
- * leaves 2.5 % of its bins above the band and 2.5 % below, and the rule
- * above lets 20 % out, MC_TAIL_FRAC a side. A side with more has failed:
+/* Once that rule has failed, the direction: a consistent filter leaves
+ * 2.5 % of its bins above the band and 2.5 % below, and the rule above
+ * lets 20 % out in all; half of that, MC_TAIL_FRAC, is each side's share
+ * (this names the direction only: 15 % above and 2 % below is still
+ * consistent by the rule above). A side with more has failed:
  * one side alone names the direction (over-confident: NEES above, the
  * errors larger than P says; pessimistic: below); both sides is
  * inconsistent, the filter over-confident in some bins and pessimistic in
@@ -660,8 +662,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
          * or more, docs/harness.md): error growth at 2 Hz (71 % of the
          * distance, reported as any other run) describes no log footnav
          * navigates */
-        hx_error("montecarlo", "--rate %g Hz: the navigation needs %.0f Hz or more (replay refuses a slower log: no "
-                               "stance lasts more than a few samples)",
+        hx_error("montecarlo", "--rate %g Hz: the navigation needs %.0f Hz or more (replay refuses a log recorded "
+                               "slower: no stance lasts more than a few samples)",
                  (double)su.err.rate_hz, HX_TIME_RATE_MIN_HZ);
         return HX_EXIT_USAGE;
     }

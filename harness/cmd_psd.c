@@ -18,7 +18,9 @@
 #define CMD "psd"
 #define NSENS_NFFT 5
 /* Fewer Welch segments than this are warned: each bin then scatters by
- * more than a third of its value (1/sqrt(K) at least). The paper's
+ * 1/sqrt(K) of its value at least, over 35 % (100 % for one segment, but
+ * 141 % at DC and Nyquist, whose periodogram is chi2 with 1 degree of
+ * freedom, not 2). The paper's
  * 64-sample segments give hundreds on any walk; so few come of an --nfft
  * near the log's length. */
 #define PSD_FEW_SEGMENTS 8

@@ -164,7 +164,7 @@ int hx_cmd_sim(int argc, char **argv)
     if (rate < HX_TIME_RATE_MIN_HZ && hx_motion_strides(motion) > 0) {
         /* a walk too slow to replay (a static log at any rate serves
          * allan and psd): said before the samples, not by replay later */
-        hx_warn("sim", "at %g Hz the walk is below the %.0f Hz that replay and montecarlo navigate (a foot-mounted "
+        hx_warn("sim", "at %g Hz the walk is below the %.0f Hz that replay navigates as recorded (a foot-mounted "
                        "IMU needs %.0f Hz or more); allan, psd and info read it",
                 rate, HX_TIME_RATE_MIN_HZ, HX_TIME_RATE_MIN_HZ);
     }

@@ -53,7 +53,7 @@ expect_exit 0 "a walk leg turning the largest angle" "$H" sim --out "$T/x.csv" -
 # and 1e-12 round below the double bounds in float, and are not refused)
 # a walk slower than replay navigates: warned (replay refuses it later); a standing log at 5 Hz (allan, psd) is not
 expect_exit 0 "a walk at 5 Hz" "$H" sim --out "$T/x.csv" --rate 5 --duration 20
-expect_err "sim: warning: at 5 Hz the walk is below the 20 Hz that replay and montecarlo navigate" "a walk at 5 Hz: warned"
+expect_err "sim: warning: at 5 Hz the walk is below the 20 Hz that replay navigates as recorded" "a walk at 5 Hz: warned"
 expect_exit 0 "standing at 5 Hz" "$H" sim --out "$T/x.csv" --rate 5 --motion stand --duration 20
 if grep -q "below the 20 Hz" "$T/err"; then fail "standing at 5 Hz: warned as a walk"; else pass "standing at 5 Hz: no warning"; fi
 expect_exit 0 "saturation at its smallest range" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --effect saturation:range=1e-9
