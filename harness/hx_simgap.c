@@ -7,6 +7,8 @@
 #include "hx_simgap_nav.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -127,7 +129,9 @@ static double poisson_z(long n, double lam)
         return SG_ZCAP;
     }
     p = gsl_cdf_ugaussian_Qinv(p);
-    return p > SG_ZCAP ? SG_ZCAP : p;
+    /* far fewer events than lam (a jitter's expected tail, below): P(X >= n)
+     * rounds to 1, whose normal score is -inf */
+    return p > SG_ZCAP ? SG_ZCAP : (p < -SG_ZCAP || p != p ? -SG_ZCAP : p);
 }
 
 /* Two-sided score of a count against an expectation (after fitting): the
@@ -172,42 +176,117 @@ static double logvar_se(double kurt, long n)
     return sqrt((kurt - 1.0) / (double)(n - 1));
 }
 
+/* A count n against an expectation lam that was itself estimated with
+ * variance var (the jitter's tails, below): the normal score
+ * (n - lam -+ 1/2) / sqrt(lam + var), the Poisson spread and the
+ * estimate's added (treated as known, the expectation from 11,000
+ * intervals made a clean log's z spread 1.2-1.26 times too wide: a
+ * review); without an estimated tail, or where both are small, the
+ * Poisson tail: count_z (two-sided, `two`) or poisson_z. */
+static double tail_z(long n, double lam, double var, int two)
+{
+    double z;
+    if (!(var > 0.0) || !(lam + var >= 1.0)) {
+        /* no tail estimated (an exact or a coarse clock): the exact tail */
+        return two ? count_z(n, lam) : poisson_z(n, lam);
+    }
+    z = ((double)n - lam - ((double)n > lam ? 0.5 : -0.5)) / sqrt(lam + var);
+    if (!two && n <= 0) {
+        return 0.0;
+    }
+    return z > SG_ZCAP ? SG_ZCAP : (z < -SG_ZCAP ? -SG_ZCAP : z);
+}
+
 /* The drops and duplicates segment g's jitter makes by itself: with
  * Gaussian stamp noise an interval is T + N(m, s^2), and its tails pass the
  * counts' thresholds (over 1.5 T a drop, at most 0.1 T a duplicate): at 200
  * Hz with stamps jittered by 1 ms (intervals' sd 1.41 ms) 3.8 % of the
  * intervals are over 7.5 ms, which were counted as 439 drops on an 11,000
- * sample walk that lost none. m and s come from the median and the
- * quartiles of every interval's x = dt - T (s = IQR / 1.349), which a few
- * per cent of drops or duplicates hardly move, and neither do the
- * thresholds: the regular intervals' plain sd and their median absolute
- * deviation, cut at 1.5 T, came out 9 % and 7 % short on that walk (by the
- * latter a quarter of its tail still counted as drops). Expected counts n_int x P(tail);
- * 0 without a spread. A clock whose jitter is small against T (every
- * shared walk's: microseconds against milliseconds) expects none. */
-static void jitter_tails(const hx_log_t *lg, const sg_segs_t *segs, int g, double T, long n_int, double *drop,
-                         double *dup)
+ * sample walk that lost none. m and s come from the quartiles of the
+ * regular intervals (those between the thresholds), whose levels are
+ * corrected for the tails the thresholds cut off (a fixed point: the cut
+ * tails from m and s, the quartiles' levels within the kept mass from the
+ * tails), so lost samples, whose merged intervals lie beyond 1.5 T, do not
+ * widen them (taken over every interval, 2 % of drops widened the spread
+ * enough to fit a third of them away: a review), nor does the cut narrow
+ * them (the plain sd and the median absolute deviation of the cut
+ * intervals came out 9 % and 7 % short on that walk). Expected counts:
+ * the kept intervals' population n_kept / (1 - tails) times each tail;
+ * their variance by the delta method from the quartiles' (the IQR's sd
+ * estimate has variance 1.36 s^2 / n, the median pi/2 s^2 / n; their
+ * covariance left out). Only where the jitter itself is significant
+ * (jitter_z above zc) and resolved by the stamps (resolution under s / 4):
+ * intervals on a coarse lattice (stamps in ms at 400 Hz: 2 or 3 ms, never
+ * beyond 1.5 T) have quartiles that are the lattice's steps, which read
+ * as a spread made thousands of drops "expected" and hid 2 % of lost
+ * samples (a review). A Gaussian model: a heavier-tailed jitter still
+ * passes the thresholds more often than expected (docs/simgap.md,
+ * Limitations). */
+static void jitter_tails(const hx_log_t *lg, const sg_segs_t *segs, int g, double T, double res_ns,
+                         int jitter_sig, double tail[2], double var[2])
 {
-    double *x = (double *)malloc((size_t)(n_int > 0 ? n_int : 1) * sizeof *x);
+    double *x;
     long k, n = 0;
-    int blk;
-    *drop = *dup = 0.0;
-    if (x == NULL) {
+    int blk, it;
+    tail[0] = tail[1] = var[0] = var[1] = 0.0; /* drops, duplicates */
+    if (!jitter_sig) {
         return;
     }
     for (blk = 0; blk < segs->nb[g]; blk++) {
-        for (k = segs->start[g][blk] + 1; k < segs->start[g][blk] + segs->n[g][blk] && n < n_int; k++) {
-            x[n++] = (double)(lg->t_ns[k] - lg->t_ns[k - 1]) - T;
+        n += segs->n[g][blk];
+    }
+    x = (double *)malloc((size_t)(n > 0 ? n : 1) * sizeof *x);
+    if (x == NULL) {
+        return;
+    }
+    n = 0;
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        for (k = segs->start[g][blk] + 1; k < segs->start[g][blk] + segs->n[g][blk]; k++) {
+            const double dt = (double)(lg->t_ns[k] - lg->t_ns[k - 1]);
+            if (dt > 0.1 * T && dt <= 1.5 * T) {
+                x[n++] = dt - T;
+            }
         }
     }
     if (n > 8) {
-        double med, sd;
+        double q1, q2, q3, m = 0.0, sd = 0.0, hi = 0.0, lo = 0.0, pop, u_hi, u_lo;
         qsort(x, (size_t)n, sizeof *x, hx_cmp_double);
-        med = sg_quantile_sorted(x, (int)n, 0.5);
-        sd = (sg_quantile_sorted(x, (int)n, 0.75) - sg_quantile_sorted(x, (int)n, 0.25)) / 1.3489795;
-        if (sd > 0.0) {
-            *drop = (double)n_int * gsl_cdf_ugaussian_Q((0.5 * T - med) / sd);
-            *dup = (double)n_int * gsl_cdf_ugaussian_P((-0.9 * T - med) / sd);
+        q1 = gsl_stats_quantile_from_sorted_data(x, 1, (size_t)n, 0.25);
+        q2 = gsl_stats_quantile_from_sorted_data(x, 1, (size_t)n, 0.5);
+        q3 = gsl_stats_quantile_from_sorted_data(x, 1, (size_t)n, 0.75);
+        for (it = 0; it < 50; it++) {
+            const double kept = 1.0 - hi - lo;
+            const double z1 = gsl_cdf_ugaussian_Pinv(lo + 0.25 * kept), z2 = gsl_cdf_ugaussian_Pinv(lo + 0.5 * kept),
+                         z3 = gsl_cdf_ugaussian_Pinv(lo + 0.75 * kept);
+            double hi2, lo2;
+            sd = (q3 - q1) / (z3 - z1);
+            m = q2 - sd * z2;
+            if (!(sd > 0.0)) {
+                break;
+            }
+            hi2 = gsl_cdf_ugaussian_Q((0.5 * T - m) / sd);
+            lo2 = gsl_cdf_ugaussian_P((-0.9 * T - m) / sd);
+            if (hi2 + lo2 > 0.5) {
+                sd = 0.0; /* no clock left to model */
+                break;
+            }
+            if (fabs(hi2 - hi) < 1e-12 && fabs(lo2 - lo) < 1e-12) {
+                break;
+            }
+            hi = hi2;
+            lo = lo2;
+        }
+        if (sd > 0.0 && res_ns <= 0.25 * sd) {
+            pop = (double)n / (1.0 - hi - lo);
+            u_hi = (0.5 * T - m) / sd;
+            u_lo = (-0.9 * T - m) / sd;
+            tail[0] = pop * hi;
+            tail[1] = pop * lo;
+            /* dlam/ds = pop phi(u) u / s, dlam/dm = pop phi(u) / s */
+            var[0] = pop * pop * gsl_ran_ugaussian_pdf(u_hi) * gsl_ran_ugaussian_pdf(u_hi) *
+                     (u_hi * u_hi * 1.36 + 1.5708) / (double)n;
+            var[1] = pop * pop * gsl_ran_ugaussian_pdf(u_lo) * gsl_ran_ugaussian_pdf(u_lo) *
+                     (u_lo * u_lo * 1.36 + 1.5708) / (double)n;
         }
     }
     free(x);
@@ -307,7 +386,6 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
             }
         }
         t->jit_sd[g] = nreg > 1 ? sqrt((s2 - s * s / (double)nreg) / (double)(nreg - 1)) * 1e-9 : 0.0;
-        jitter_tails(lg, segs, g, T, t->n_int[g], &t->tail_drop[g], &t->tail_dup[g]);
         t->jit_kurt[g] = 3.0;
         if (nreg > 3) {
             /* central moments from the raw ones about ref (x in ns: no overflow) */
@@ -318,17 +396,22 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
                 t->jit_kurt[g] = c4 / (c2 * c2);
             }
         }
-        t->z[g][SG_TIM_DUP] = poisson_z(t->n_dup[g], t->tail_dup[g]);
-        t->z[g][SG_TIM_DROP] = poisson_z(t->n_drop[g], t->tail_drop[g]);
         {
             /* what rounding to the resolution leaves (above) */
-            double s0 = s0_ns * 1e-9, z = 0.0;
+            double s0 = s0_ns * 1e-9, z = 0.0, tail[2], var[2];
             if (nreg > 2 && t->jit_sd[g] > s0) {
                 z = (log(t->jit_sd[g] * t->jit_sd[g]) - log(s0 > 1e-12 ? s0 * s0 : 1e-24)) /
                     logvar_se(t->jit_kurt[g], nreg);
             }
             t->z[g][SG_TIM_JITTER] = z > SG_ZCAP ? SG_ZCAP : z;
+            jitter_tails(lg, segs, g, T, res, z > gsl_cdf_ugaussian_Qinv(alpha / 3.0), tail, var);
+            t->tail_drop[g] = tail[0];
+            t->tail_dup[g] = tail[1];
+            t->tail_drop_var[g] = var[0];
+            t->tail_dup_var[g] = var[1];
         }
+        t->z[g][SG_TIM_DUP] = tail_z(t->n_dup[g], t->tail_dup[g], t->tail_dup_var[g], 0);
+        t->z[g][SG_TIM_DROP] = tail_z(t->n_drop[g], t->tail_drop[g], t->tail_drop_var[g], 0);
     }
     {
         double zc = gsl_cdf_ugaussian_Qinv(alpha / 3.0);
@@ -344,14 +427,16 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
         t->dup_prob = xdup / (double)nif;
         t->drop_prob = xdrop / ((double)nif + xdrop);
         t->stamp_s = t->jit_sd[SG_FIT] > s0 ? sqrt(0.5 * (t->jit_sd[SG_FIT] * t->jit_sd[SG_FIT] - s0 * s0)) : 0.0;
-        t->z_after[SG_TIM_DUP] = count_z(t->n_dup[SG_HOLD], t->dup_prob * (double)t->n_int[SG_HOLD] +
-                                                                t->tail_dup[SG_HOLD]);
+        t->z_after[SG_TIM_DUP] = tail_z(t->n_dup[SG_HOLD], t->dup_prob * (double)t->n_int[SG_HOLD] +
+                                                               t->tail_dup[SG_HOLD],
+                                        t->tail_dup_var[SG_HOLD], 1);
         /* before each kept sample p / (1 - p) lost ones on average
          * (geometric): the held-out intervals expect the fit's drops per
          * interval, not p per interval (10 % too few at p = 0.1, +4.5 sigma
          * on a clean dropout log; test_timing_dropout_after) */
-        t->z_after[SG_TIM_DROP] = count_z(t->n_drop[SG_HOLD], xdrop / (double)nif * (double)t->n_int[SG_HOLD] +
-                                                                   t->tail_drop[SG_HOLD]);
+        t->z_after[SG_TIM_DROP] = tail_z(t->n_drop[SG_HOLD], xdrop / (double)nif * (double)t->n_int[SG_HOLD] +
+                                                                  t->tail_drop[SG_HOLD],
+                                         t->tail_drop_var[SG_HOLD], 1);
         {
             double ex = 2.0 * t->stamp_s * t->stamp_s + s0 * s0, sd = t->jit_sd[SG_HOLD];
             long nh = t->n_int[SG_HOLD] - t->n_dup[SG_HOLD];

@@ -741,6 +741,7 @@ typedef struct {
      *  expected (intervals beyond 1.5 or under 0.1 nominal periods, from
      *  the robust spread of the regular intervals): the counts' null */
     double tail_drop[SG_NSEG], tail_dup[SG_NSEG];
+    double tail_drop_var[SG_NSEG], tail_dup_var[SG_NSEG]; /**< their variances as estimates */
     double z[SG_NSEG][SG_TIM_NKIND];
     int significant;
     double dup_prob, drop_prob, stamp_s;   /**< fitted on the fit segment */

@@ -490,9 +490,10 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
         if (r->tim.tail_drop[SG_FULL] >= 0.5 || r->tim.tail_dup[SG_FULL] >= 0.5) {
             /* a jitter wide against the period: its tails pass the counts'
              * thresholds, and the counts are judged against them */
-            fprintf(f, "  the jitter's own tails make about %.0f of the drops and %.0f of the duplicates expected "
-                       "(intervals over 1.5 or under 0.1 periods): the counts are judged against them\n",
-                    r->tim.tail_drop[SG_FULL], r->tim.tail_dup[SG_FULL]);
+            fprintf(f, "  the jitter alone would give about %.0f drops and %.0f duplicates (intervals over 1.5 or "
+                       "under 0.1 periods; counted %ld and %ld): the counts are judged against them\n",
+                    r->tim.tail_drop[SG_FULL], r->tim.tail_dup[SG_FULL], r->tim.n_drop[SG_FULL],
+                    r->tim.n_dup[SG_FULL]);
         }
         for (d = 0; d < SG_TIM_NKIND; d++) {
             if (r->tim.sel[d]) {

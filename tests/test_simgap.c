@@ -986,7 +986,12 @@ static void test_timing_dropout_after(void **state)
  * selected; judged against an ideal clock's 0 they were, at the cap of
  * 40 sigma (a walk jittered so read "dropout (prob 0.0367)"). With a
  * narrower jitter (0.4 ms: a tail of 2e-6) and one sample in 50 lost,
- * the drops are found and their rate fitted as on an exact grid. */
+ * the drops are found and their rate fitted as on an exact grid; with the
+ * wide jitter and one in 50 lost, found beyond the tail and fitted within
+ * 25 % (quartiles of every interval, the merged ones too, fitted 0.0129);
+ * with stamps floored to the millisecond at 400 Hz (a lattice, no jitter)
+ * no tail at all, and one in 50 lost found (taken for a spread, the
+ * lattice's quartiles expected thousands of drops and hid them). */
 static void test_timing_jitter_tails(void **state)
 {
     enum { N = 20000 };
@@ -995,7 +1000,7 @@ static void test_timing_jitter_tails(void **state)
     sg_segs_t segs;
     sg_timing_t tm;
     fnav_rng_t rng;
-    double tail1;
+    double tail1, tail2;
     long n1;
     const double T = 5e6, sd = 1e6, expect = (double)(N - 1) * 0.5 * erfc(0.5 * T / (sqrt(2.0) * sd) / sqrt(2.0));
     long k, j = 0;
@@ -1026,9 +1031,38 @@ static void test_timing_jitter_tails(void **state)
         }
     }
     sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
-    fprintf(stderr, "jitter tails: 1 ms: %.1f drops expected (normal tail %.1f) of %ld counted; 0.4 ms: %.3f\n",
-            tail1, expect, n1, tm.tail_drop[SG_FULL]);
-    assert_true(tm.tail_drop[SG_FULL] < 1.0);
+    tail2 = tm.tail_drop[SG_FULL];
+    assert_true(tail2 < 1.0);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    FNAV_ASSERT_CLOSE(tm.drop_prob, 0.02, 0.0, 0.05);
+    /* the wide jitter again, with one sample in 50 lost: the drops are
+     * found beyond the tail and their rate fitted without the tail (the
+     * spread from every interval, the merged ones too, fitted 0.0129) */
+    for (j = 0, k = 0; j < N; k++) {
+        if (k % 50 != 49) {
+            t[j++] = (int64_t)llround((double)k * T + sd * (double)fnav_rng_gauss(&rng));
+            if (j > 1 && t[j - 1] <= t[j - 2]) {
+                t[j - 1] = t[j - 2] + 1;
+            }
+        }
+    }
+    sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
+    fprintf(stderr, "jitter tails: 1 ms: %.1f drops expected (normal tail %.1f) of %ld counted; 0.4 ms: %.3f; "
+                    "1 ms, 2 %% lost: drop_prob %.4f, z %.1f\n",
+            tail1, expect, n1, tail2, tm.drop_prob, tm.z[SG_FULL][SG_TIM_DROP]);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    FNAV_ASSERT_CLOSE(tm.drop_prob, 0.02, 0.0, 0.25);
+    /* stamps floored to the millisecond at 400 Hz: the intervals are 2 or
+     * 3 ms, never beyond 1.5 T, a lattice whose quartiles are its steps,
+     * not a jitter: no tail, and 2 % lost samples found (the quartiles
+     * read as a spread expected thousands of drops and hid them) */
+    for (j = 0, k = 0; j < N; k++) {
+        if (k % 50 != 49) {
+            t[j++] = (k * 2500000LL) / 1000000LL * 1000000LL;
+        }
+    }
+    sg_timing_analyse(&lg, 400.0, &segs, 0.05, &tm);
+    assert_true(tm.tail_drop[SG_FULL] == 0.0 && tm.tail_dup[SG_FULL] == 0.0);
     assert_true(tm.sel[SG_TIM_DROP]);
     FNAV_ASSERT_CLOSE(tm.drop_prob, 0.02, 0.0, 0.05);
 }
