@@ -197,29 +197,6 @@ static double tail_z(long n, double lam, double var, int two)
     return z > SG_ZCAP ? SG_ZCAP : (z < -SG_ZCAP ? -SG_ZCAP : z);
 }
 
-/* The drops and duplicates segment g's jitter makes by itself: with
- * Gaussian stamp noise an interval is T + N(m, s^2), and its tails pass the
- * counts' thresholds (over 1.5 T a drop, at most 0.1 T a duplicate): at 200
- * Hz with stamps jittered by 1 ms (intervals' sd 1.41 ms) 3.8 % of the
- * intervals are over 7.5 ms, which were counted as 439 drops on an 11,000
- * sample walk that lost none. m and s come from the quartiles of the
- * regular intervals (those between the thresholds), whose levels are
- * corrected for the tails the thresholds cut off (a fixed point: the cut
- * tails from m and s, the quartiles' levels within the kept mass from the
- * tails), so lost samples, whose merged intervals lie beyond 1.5 T, do not
- * widen them (taken over every interval, 2 % of drops widened the spread
- * enough to fit a third of them away: a review), nor does the cut narrow
- * them (the plain sd and the median absolute deviation of the cut
- * intervals came out 9 % and 7 % short on that walk). Expected counts:
- * the kept intervals' population n_kept / (1 - tails) times each tail;
- * their variance by the delta method from the quartiles' (below). Only where the jitter itself is significant
- * (jitter_z above zc) and resolved by the stamps (resolution under s / 4):
- * intervals on a coarse lattice (stamps in ms at 400 Hz: 2 or 3 ms, never
- * beyond 1.5 T) have quartiles that are the lattice's steps, which read
- * as a spread made thousands of drops "expected" and hid 2 % of lost
- * samples (a review). A Gaussian model: a heavier-tailed jitter still
- * passes the thresholds more often than expected (docs/simgap.md,
- * Limitations). */
 /* jitter_tails' fixed point: m and s of N(m, s^2) from the quartiles q[]
  * of the intervals kept between the thresholds (x = dt - T, ns), their
  * levels within the kept mass; the expected drops and duplicates of the n
@@ -257,6 +234,31 @@ static double tails_fit(const double q[3], double T, long n, double lam[2], doub
     return sd;
 }
 
+/* The drops and duplicates segment g's jitter makes by itself: with
+ * Gaussian stamp noise an interval is T + N(m, s^2), and its tails pass the
+ * counts' thresholds (over 1.5 T a drop, at most 0.1 T a duplicate): at 200
+ * Hz with stamps jittered by 1 ms (intervals' sd 1.41 ms) 3.8 % of the
+ * intervals are over 7.5 ms, which were counted as 439 drops on an 11,000
+ * sample walk that lost none. m and s come from the quartiles of the
+ * regular intervals (those between the thresholds), whose levels are
+ * corrected for the tails the thresholds cut off (a fixed point: the cut
+ * tails from m and s, the quartiles' levels within the kept mass from the
+ * tails), so lost samples, whose merged intervals lie beyond 1.5 T, do not
+ * widen them (taken over every interval, 2 % of drops widened the spread
+ * enough to fit a third of them away: a review), nor does the cut narrow
+ * them (the plain sd and the median absolute deviation of the cut
+ * intervals came out 9 % and 7 % short on that walk). Expected counts:
+ * the kept intervals' population n_kept / (1 - tails) times each tail,
+ * their variances by the delta method through the fixed point (below).
+ * Only where the jitter itself is significant (jitter_sig: its z above
+ * the timing family's critical value) and resolved by the stamps
+ * (resolution under s / 4):
+ * intervals on a coarse lattice (stamps in ms at 400 Hz: 2 or 3 ms, never
+ * beyond 1.5 T) have quartiles that are the lattice's steps, which read
+ * as a spread made thousands of drops "expected" and hid 2 % of lost
+ * samples (a review). A Gaussian model: a heavier-tailed jitter still
+ * passes the thresholds more often than expected (docs/simgap.md,
+ * "Timing domain"). */
 static void jitter_tails(const hx_log_t *lg, const sg_segs_t *segs, int g, double T, double res_ns,
                          int jitter_sig, double tail[2], double var[2])
 {

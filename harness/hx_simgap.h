@@ -739,7 +739,8 @@ typedef struct {
     double jit_kurt[SG_NSEG]; /**< their kurtosis (3 when too few): the log-variance tests' spread */
     /** the drops and duplicates the jitter's own Gaussian tails make
      *  expected (intervals beyond 1.5 or under 0.1 nominal periods, from
-     *  the robust spread of the regular intervals): the counts' null */
+     *  the regular intervals' quartiles corrected for the cut): the
+     *  counts' null; 0 where the jitter is not significant or not resolved */
     double tail_drop[SG_NSEG], tail_dup[SG_NSEG];
     double tail_drop_var[SG_NSEG], tail_dup_var[SG_NSEG]; /**< their variances as estimates */
     double z[SG_NSEG][SG_TIM_NKIND];

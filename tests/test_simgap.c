@@ -977,6 +977,24 @@ static void test_timing_dropout_after(void **state)
     assert_false(tm.open[SG_TIM_DROP]);
 }
 
+/* n clock stamps k T + N(0, sd^2) ns, k counting on past every lose-th
+ * sample (lose 0: none lost), each at least 1 ns after the one before (a
+ * clock does not step back); the lost samples draw no noise. */
+static void jittered_stamps(int64_t *t, long n, double T, double sd, long lose, fnav_rng_t *rng)
+{
+    long k, j;
+    for (j = 0, k = 0; j < n; k++) {
+        if (lose > 0 && k % lose == lose - 1) {
+            continue;
+        }
+        t[j] = (int64_t)llround((double)k * T + sd * (double)fnav_rng_gauss(rng));
+        if (j > 0 && t[j] <= t[j - 1]) {
+            t[j] = t[j - 1] + 1;
+        }
+        j++;
+    }
+}
+
 /* A clock whose jitter is wide against its period: stamps k T + e_k,
  * e_k ~ N(0, 1 ms) at 200 Hz (T = 5 ms), so each interval is T + N(0, 2 ms^2)
  * and 3.85 % of them (Q(2.5 / 1.414)) pass the drop threshold of 1.5 T: the
@@ -1007,12 +1025,7 @@ static void test_timing_jitter_tails(void **state)
     (void)state;
     memset(&lg, 0, sizeof lg);
     fnav_rng_seed(&rng, 17u, 5u);
-    for (k = 0; k < N; k++) {
-        t[k] = (int64_t)llround((double)k * T + sd * (double)fnav_rng_gauss(&rng));
-        if (k > 0 && t[k] <= t[k - 1]) {
-            t[k] = t[k - 1] + 1; /* a clock does not step back */
-        }
-    }
+    jittered_stamps(t, N, T, sd, 0, &rng);
     lg.n = (size_t)N;
     lg.t_ns = t;
     sg_segs_split(N, 0.6, 1, &segs);
@@ -1025,11 +1038,7 @@ static void test_timing_jitter_tails(void **state)
     assert_false(tm.sel[SG_TIM_DUP]);
     assert_true(tm.sel[SG_TIM_JITTER]);
     /* narrower jitter, one sample in 50 lost */
-    for (k = 0; j < N; k++) {
-        if (k % 50 != 49) {
-            t[j++] = (int64_t)llround((double)k * T + 0.4e6 * (double)fnav_rng_gauss(&rng));
-        }
-    }
+    jittered_stamps(t, N, T, 0.4e6, 50, &rng);
     sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
     tail2 = tm.tail_drop[SG_FULL];
     assert_true(tail2 < 1.0);
@@ -1038,14 +1047,7 @@ static void test_timing_jitter_tails(void **state)
     /* the wide jitter again, with one sample in 50 lost: the drops are
      * found beyond the tail and their rate fitted without the tail (the
      * spread from every interval, the merged ones too, fitted 0.0129) */
-    for (j = 0, k = 0; j < N; k++) {
-        if (k % 50 != 49) {
-            t[j++] = (int64_t)llround((double)k * T + sd * (double)fnav_rng_gauss(&rng));
-            if (j > 1 && t[j - 1] <= t[j - 2]) {
-                t[j - 1] = t[j - 2] + 1;
-            }
-        }
-    }
+    jittered_stamps(t, N, T, sd, 50, &rng);
     sg_timing_analyse(&lg, 200.0, &segs, 0.05, &tm);
     fprintf(stderr, "jitter tails: 1 ms: %.1f drops expected (normal tail %.1f) of %ld counted; 0.4 ms: %.3f; "
                     "1 ms, 2 %% lost: drop_prob %.4f, z %.1f\n",
@@ -1070,11 +1072,11 @@ static void test_timing_jitter_tails(void **state)
 /* The drop count's score against an estimated tail: over 120 clean logs
  * of 11,000 samples at 200 Hz with 1 ms of Gaussian jitter its spread is
  * about 1 (0.97), and dropout is selected about as often as the test's
- * 1.7 % (1 of 120; 4 of 300). With the estimate taken as known (the tail's variance
+ * 1.7 % (1 of 120). With the estimate taken as known (the tail's variance
  * left out) the spread was 1.2-1.26 (a review's 300 logs), and with the
  * variance from the plain normal tail's gradient (not through the cut's
- * fixed point) 1.17, dropout selected in 14 of 300 logs of this
- * generator. The bound 1.08 lies between. */
+ * fixed point; 6fd1349d) 1.17 over the first 300 logs of this generator,
+ * dropout selected in 14. The bound 1.08 lies between. */
 static void test_timing_jitter_tail_score(void **state)
 {
     enum { N = 11000, RUNS = 120 };
@@ -1087,15 +1089,9 @@ static void test_timing_jitter_tail_score(void **state)
         sg_segs_t segs;
         sg_timing_t tm;
         fnav_rng_t rng;
-        long k;
         memset(&lg, 0, sizeof lg);
         fnav_rng_seed(&rng, (uint32_t)(run + 1), 9u);
-        for (k = 0; k < N; k++) {
-            t[k] = (int64_t)llround((double)k * 5e6 + 1e6 * (double)fnav_rng_gauss(&rng));
-            if (k > 0 && t[k] <= t[k - 1]) {
-                t[k] = t[k - 1] + 1;
-            }
-        }
+        jittered_stamps(t, N, 5e6, 1e6, 0, &rng);
         lg.n = (size_t)N;
         lg.t_ns = t;
         sg_segs_split(N, 0.6, 1, &segs);
