@@ -1482,11 +1482,15 @@ static int pq_preamble(hx_reader_t *r, double rate_hz, double *fs_hz, long *line
     }
 }
 
-/* The row of units under a Consensys header (hx_names_consensys): the
- * units of the time, accel and gyro columns read, for those --units does
- * not give, said in a warning. A row of data there instead (an export
- * without its units row) is left to be read. 0 ok, -1 error (err set). */
-static int consensys_units(hx_reader_t *r)
+/* The row of units under a header: Shimmer's Consensys export writes one
+ * (hx_names_consensys), and so do loggers and hand-made spreadsheets
+ * (`s,g,g,g,deg/s,...` under `time,acc_x,...`). The units of the time,
+ * accel and gyro columns read, for those --units does not give, said in a
+ * warning. A row of data there instead (an export without its units row)
+ * is left to be read, and so, under another header, is a row whose first
+ * column read (the time's, else the accelerometer's) is no unit: its
+ * error is the data's. 0 ok, -1 error (err set). */
+static int units_row(hx_reader_t *r, int consensys)
 {
     static const char *const what[3] = { "time", "accel", "gyro" };
     hx_csv_layout_t *l = &r->layout;
@@ -1505,6 +1509,12 @@ static int consensys_units(hx_reader_t *r)
     if (r->col_t >= 0 && r->col_t < n &&
         (parse_num(f[r->col_t], &v) == 0 || parse_datetime_ns(f[r->col_t], &t_ns) == 0)) {
         return read_again_from(r, pos, lines); /* data: read again as the first row */
+    }
+    if (!consensys) {
+        const int c0 = r->col_t >= 0 ? r->col_t : r->col_a[0];
+        if (c0 < 0 || c0 >= n || hx_name_unit_of_text(f[c0]) == HX_UNIT_NONE) {
+            return read_again_from(r, pos, lines);
+        }
     }
     for (q = 0; q < 3; q++) {
         const int *cols = q == 0 ? &r->col_t : q == 1 ? r->col_a : r->col_g;
@@ -1537,8 +1547,8 @@ static int consensys_units(hx_reader_t *r)
             snprintf(said + len, sizeof said - len, "%s%s", len > 0 ? "," : "", item);
         }
     }
-    add_warn(r, "%s:%ld: a row of units under the header (Shimmer's Consensys export): read as --units %s", r->path,
-             r->stats.lines, said[0] != '\0' ? said : "(none: the units given)");
+    add_warn(r, "%s:%ld: a row of units under the header%s: read as --units %s", r->path, r->stats.lines,
+             consensys ? " (Shimmer's Consensys export)" : "", said[0] != '\0' ? said : "(none: the units given)");
     return 0;
 }
 
@@ -1733,7 +1743,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             if (r->ros && ros_stamp_unset(r, f, n) != 0) {
                 return -1;
             }
-            return consensys ? consensys_units(r) : 0;
+            return r->meta.format == HX_FMT_CSV ? units_row(r, consensys) : 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
             /* no --columns and the interchange names not all there: the

@@ -2220,6 +2220,56 @@ static void test_consensys(void **state)
     unlink(p);
 }
 
+/* A row of units under any CSV header, as loggers and spreadsheets write
+ * it: read as --units, said in a warning; --units given rules its column;
+ * a second row that is neither data nor units keeps the data's error. */
+static void test_units_row(void **state)
+{
+    const double d2r = 0.017453292519943295;
+    char p[256];
+    readall_t ra;
+    hx_reader_t *r;
+    fnav_sample_t s0;
+    char err[512];
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "time,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\ns,g,g,g,deg/s,deg/s,deg/s\n"
+                  "0,0,0,1,10,20,30\n0.01,0,0,1,10,20,30\n");
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    if (r == NULL) {
+        fail_msg("%s", err);
+    }
+    assert_int_equal(hx_reader_next(r, &s0), FNAV_OK);
+    assert_true((float)s0.accel_mps2[2] == (float)9.80665);
+    assert_true((float)s0.gyro_rps[1] == (float)(20.0 * d2r));
+    if (strstr(hx_reader_warnings(r), ":2: a row of units under the header: read as --units "
+                                      "time=s,accel=g,gyro=deg/s") == NULL ||
+        strstr(hx_reader_warnings(r), "Consensys") != NULL) {
+        fail_msg("warnings: %s", hx_reader_warnings(r));
+    }
+    hx_reader_close(r);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[1].t_ns - ra.s[0].t_ns == 10000000);
+    unlink(p);
+    /* semicolons, ms, no unit for the gyro: refused with the option */
+    write_text(p, "t;ax;ay;az;gx;gy;gz\nms;m/s^2;m/s^2;m/s^2;;;\n0;0;0;9.8;0;0;0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, ":2: the row of units under the header gives '' for the gyro column, not a unit of it read; "
+                       "give its unit with --units gyro=...") == NULL) {
+        fail_msg("no gyro unit: %s", ra.err);
+    }
+    unlink(p);
+    /* a second row that is no units (a label): the data's error as before */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\nstart,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 0);
+    if (strstr(ra.err, ":2: time ('start') is not a number") == NULL) {
+        fail_msg("label row: %s", ra.err);
+    }
+    unlink(p);
+}
+
 /* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
  * exactly the formats --from takes, in order: a new importer that misses
  * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
@@ -5119,6 +5169,7 @@ int main(void)
         cmocka_unit_test(test_decimal_comma),
         cmocka_unit_test(test_datetime_stamps),
         cmocka_unit_test(test_consensys),
+        cmocka_unit_test(test_units_row),
         cmocka_unit_test(test_ros_euroc),
         cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_fuzz_seed_formats),

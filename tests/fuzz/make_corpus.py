@@ -210,6 +210,10 @@ def main():
         b'gyroRotationX(rad/s),gyroRotationY(rad/s),gyroRotationZ(rad/s),motionUserAccelerationX(G)\n'
         b'2019-03-19 13:12:49.592 +0100,0,266943.391,0.01,-0.02,-1.0,266943.392,0.001,0.002,0.003,0.0\n'
         b'2019-03-19 13:12:49.602 +0100,1,266943.401,0.01,-0.02,-1.0,266943.402,0.001,0.002,0.003,0.0\n')
+    # a row of units under a plain header (units_row)
+    put('log_reader', 'csv_units_row', bytes([FMT['auto']]) +
+        b'time,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\ns,g,g,g,deg/s,deg/s,deg/s\n'
+        b'0,0.01,-0.02,1.0,0.1,0.2,0.3\n0.01,0.01,-0.02,1.0,0.1,0.2,0.3\n')
     # several time names, the first naming its unit read (hx_names_match)
     put('log_reader', 'csv_two_times', bytes([FMT['auto']]) +
         b'Timestamp (ms),Time since start in ms,ax,ay,az,gx,gy,gz\n1700000000000.5,0,0.1,0.2,9.8,0,0,0\n'
