@@ -267,8 +267,8 @@ fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int stil
     if (al == NULL || s == NULL) {
         return FNAV_E_ARG;
     }
-    if (al->done) {
-        return FNAV_E_STATE;
+    if (al->done || !(al->cfg.still_ratio > FNAV_R(1.0))) {
+        return FNAV_E_STATE; /* done, or never initialised (init requires still_ratio > 1) */
     }
     c = &al->cur;
     ratio_break = left_floor(al, c, still, stat, &lstat);
@@ -296,6 +296,9 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
 {
     if (al == NULL) {
         return FNAV_E_ARG;
+    }
+    if (!(al->cfg.still_ratio > FNAV_R(1.0))) {
+        return FNAV_E_STATE; /* never initialised */
     }
     if (al->done) {
         return FNAV_OK;

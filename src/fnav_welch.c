@@ -217,7 +217,7 @@ uint32_t fnav_welch_segments(const fnav_welch_t *w)
 
 uint32_t fnav_welch_bins(const fnav_welch_t *w)
 {
-    return w != NULL ? w->cfg.nfft / 2u + 1u : 0u;
+    return w != NULL && w->cfg.nfft > 0u ? w->cfg.nfft / 2u + 1u : 0u; /* 0: never initialised */
 }
 
 fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k)

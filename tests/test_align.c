@@ -23,6 +23,24 @@
 
 static const double k_g = 9.80665;
 
+/* An alignment never initialised (zeroed): push and finish say
+ * FNAV_E_STATE, as the other modules do (push said FNAV_E_ARG, from the
+ * zero gravity of the empty configuration, or averaged the samples). */
+static void test_not_initialised(void **state)
+{
+    static fnav_align_t al, copy;
+    fnav_sample_t s;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.accel_mps2[2] = FNAV_R(-9.81);
+    memset(&copy, 0, sizeof copy);
+    assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(1.0)), FNAV_E_STATE);
+    assert_int_equal(fnav_align_finish(&al), FNAV_E_STATE);
+    assert_memory_equal(&al, &copy, sizeof al);
+    assert_int_equal(fnav_align_init(&al, &fnav_align_config_default), FNAV_OK);
+    assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(1.0)), FNAV_AGAIN);
+}
+
 static void test_config(void **state)
 {
     fnav_align_t al;
@@ -823,6 +841,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_not_initialised),
         cmocka_unit_test(test_from_means),
         cmocka_unit_test(test_from_means_bad_args),
         cmocka_unit_test(test_still_period),

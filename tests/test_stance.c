@@ -47,6 +47,28 @@ static double jitter(void)
     return (double)(g_lcg >> 8) / 8388608.0 - 1.0;
 }
 
+/* A detector never initialised (zeroed, as static storage is), or whose
+ * only init failed: push and pop say FNAV_E_STATE and take nothing (pop
+ * decided from the zeroed configuration, dividing by sigma_a 0). */
+static void test_not_initialised(void **state)
+{
+    static fnav_stance_t st, copy;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_sample_t s;
+    fnav_stance_out_t out;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.accel_mps2[2] = FNAV_R(-9.81);
+    c.window_s = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    memset(&copy, 0, sizeof copy);
+    assert_int_equal(fnav_stance_push(&st, &s), FNAV_E_STATE);
+    assert_int_equal(fnav_stance_pop(&st, &out), FNAV_E_STATE);
+    assert_memory_equal(&st, &copy, sizeof st);
+    assert_int_equal(fnav_stance_init(&st, &fnav_stance_config_default), FNAV_OK);
+    assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+}
+
 static void test_config(void **state)
 {
     fnav_stance_t st;
@@ -1842,6 +1864,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_not_initialised),
         cmocka_unit_test(test_window_from_rate),
         cmocka_unit_test(test_rate_without_stamps),
         cmocka_unit_test(test_shoe_statistic),

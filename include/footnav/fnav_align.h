@@ -144,7 +144,8 @@ static inline FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, c
  * @param still   1 when the detector marks the foot at rest
  * @param stat    the detector's test statistic (> 0), or 0 to skip the ratio test
  * @return FNAV_AGAIN while aligning, FNAV_OK when the alignment completed
- *         with this call (result valid), FNAV_E_STATE once already done,
+ *         with this call (result valid), FNAV_E_STATE once already done
+ *         or for an alignment never initialised (zeroed, as static storage is),
  *         FNAV_E_RANGE when the period that would have completed has a mean
  *         specific force off gravity by more than FNAV_ALIGN_GRAVITY_TOL
  *         (zero: no gravity direction, a sensor that outputs zeros; or
@@ -163,8 +164,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
  * at the first motion.
  * @return FNAV_OK with the result (also when already done), FNAV_E_STATE
  *         when no period qualifies (a current period whose mean |f| is off
- *         gravity by more than FNAV_ALIGN_GRAVITY_TOL does not), FNAV_E_ARG
- *         for NULL.
+ *         gravity by more than FNAV_ALIGN_GRAVITY_TOL does not) or for an
+ *         alignment never initialised, FNAV_E_ARG for NULL.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 

@@ -297,7 +297,9 @@ static inline FNAV_WARN_UNUSED fnav_status_t fnav_stance_init(fnav_stance_t *st,
  *         or when the caller did not pop the due decisions: the ring is
  *         full, or the sample would overwrite the start of the window of a
  *         decision not yet made (a window longer than the look-ahead); pop
- *         until FNAV_AGAIN and push it again (nothing was stored).
+ *         until FNAV_AGAIN and push it again (nothing was stored); also
+ *         FNAV_E_STATE, taking nothing, for a detector never initialised
+ *         (zeroed, as static storage is, or whose only init failed).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample);
 
@@ -307,7 +309,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sa
  * @param out  decision for the oldest undecided sample (valid with FNAV_OK)
  * @return FNAV_OK with *out; FNAV_AGAIN when no decision is due yet (the
  *         window still fills, or the rate is being estimated); after
- *         fnav_stance_finish(), FNAV_END once every sample was returned.
+ *         fnav_stance_finish(), FNAV_END once every sample was returned;
+ *         FNAV_E_STATE for a detector never initialised; FNAV_E_ARG on NULL.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out);
 
