@@ -93,6 +93,57 @@ typedef struct {
 #define SQ_HUGE_BAD 1e20f
 #endif
 
+/* With the rate estimated (stance.rate_hz 0) the first frame waits for
+ * the 33rd sample (32 intervals) or for its own latency, h + lag samples,
+ * whichever is later, and that sample releases every frame then due: the
+ * figures fnav_nav.h and docs/navigation.md ("Latency") give. A standing
+ * sensor at exact rates; counted by push and pop. */
+static int first_release(double rate_hz, float min_zupt_cycle, int *released)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t f;
+    fnav_sample_t s;
+    int i;
+    c.stance.min_zupt_cycle = (fnav_real_t)min_zupt_cycle;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (i = 1; i <= 200; i++) {
+        memset(&s, 0, sizeof s);
+        s.t_ns = (int64_t)((double)(i - 1) * 1e9 / rate_hz + 0.5);
+        s.accel_mps2[2] = FNAV_R(-9.80665);
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        *released = 0;
+        while (fnav_nav_pop(&nav, &f) == FNAV_OK) {
+            ++*released;
+        }
+        if (*released > 0) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+static void test_first_frames(void **state)
+{
+    int n = 0;
+    (void)state;
+    assert_true(fnav_nav_config_default.stance.rate_hz == FNAV_R(0.0)); /* estimated */
+    /* defaults: 200 Hz latency 16 samples, 33 - 16 = 17 frames at sample 33 */
+    assert_int_equal(first_release(200.0, fnav_nav_config_default.stance.min_zupt_cycle, &n), 33);
+    assert_int_equal(n, 17);
+    /* 400 Hz: latency 34 samples, past the 33rd: one frame a sample from 35 */
+    assert_int_equal(first_release(400.0, fnav_nav_config_default.stance.min_zupt_cycle, &n), 35);
+    assert_int_equal(n, 1);
+    /* 820 Hz: latency 62 (the ring's cap) */
+    assert_int_equal(first_release(820.0, fnav_nav_config_default.stance.min_zupt_cycle, &n), 63);
+    assert_int_equal(n, 1);
+    /* min_zupt_cycle 0: latency 5 at 200 Hz, 12 at 400 Hz */
+    assert_int_equal(first_release(200.0, 0.0f, &n), 33);
+    assert_int_equal(n, 28);
+    assert_int_equal(first_release(400.0, 0.0f, &n), 33);
+    assert_int_equal(n, 21);
+}
+
 static void test_config_ranges(void **state)
 {
     static fnav_nav_t nav;
@@ -2740,6 +2791,7 @@ int main(void)
         cmocka_unit_test(test_default_stance_is_detector_default),
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_config_ranges),
+        cmocka_unit_test(test_first_frames),
         cmocka_unit_test(test_config_reaches_parts),
         cmocka_unit_test(test_stream_contract),
         cmocka_unit_test(test_push_after_finish),

@@ -58,8 +58,11 @@
  * 200 Hz h 2, lag 14, frames 16 samples (80 ms) late; fnav_stance.h. With
  * stance.min_zupt_cycle 0 (the scaling off) lag = n_min_zupt - 1:
  * 5 samples (25 ms) at 200 Hz with the 20 ms run (h 2, lag 3). When the rate
- * is estimated (rate_hz = 0) the first frame waits for 33 samples. Each frame
- * carries its own sample's time.
+ * is estimated (rate_hz = 0) the first frame waits for 33 samples (the
+ * median of 32 intervals) or for its latency h + lag, whichever is later:
+ * with the defaults the 33rd sample at 200 Hz, the 35th at 400 Hz, the 63rd
+ * at 820 Hz (test_nav test_first_frames). Each frame carries its own
+ * sample's time.
  *
  * Timing: each sample's own dt is used. A repeated time stamp (dt = 0,
  * e.g. the duplicated rows of the NGIMU logs) is counted and produces a
@@ -300,8 +303,11 @@ void fnav_nav_finish(fnav_nav_t *nav);
 /**
  * Push one sample and process every due frame; *frame receives the newest.
  * When one sample releases several frames (with the rate estimated,
- * stance.rate_hz = 0, the 33rd sample releases the first ones: 28 at 200
- * Hz, 21 at 400 Hz) the earlier ones are processed and counted
+ * stance.rate_hz = 0, the 33rd sample releases the first 33 - (h + lag)
+ * when the latency is shorter: 17 at 200 Hz with the defaults, 28 at 200
+ * Hz and 21 at 400 Hz with stance.min_zupt_cycle 0; at 400 Hz and above
+ * the defaults' latency is longer and frames come one a sample; test_nav
+ * test_first_frames) the earlier ones are processed and counted
  * (stats.frames) but not returned: push and pop to see every frame.
  * @return FNAV_OK with *frame; FNAV_AGAIN when no frame is due yet; the
  *         statuses of fnav_nav_push() (FNAV_E_ARG also for a NULL frame,

@@ -55,8 +55,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t ra
 fnav_status_t fnav_cm_est_nav(fnav_cm_est_t *e, const fnav_sample_t *s, fnav_nav_frame_t *out);
 
 /** The next frame released by the same sample: one sample can release
- *  several (with the detector's rate estimated, the first 33 samples'
- *  frames come out together). Call until it answers FNAV_AGAIN.
+ *  several (with the detector's rate estimated, the 33rd sample releases
+ *  the frames due by then, fnav_nav_step). Call until it answers FNAV_AGAIN.
  *  @return FNAV_OK with *out filled, FNAV_AGAIN when none is left,
  *  FNAV_E_UNSUPPORTED when not built. */
 fnav_status_t fnav_cm_est_nav_next(fnav_cm_est_t *e, fnav_nav_frame_t *out);
