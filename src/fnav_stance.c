@@ -188,8 +188,11 @@ fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample)
     if (st == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
-    if (!(st->cfg.window_s > FNAV_R(0.0))) {
-        return FNAV_E_STATE; /* never initialised (zeroed, as static storage is): init sets a window */
+    if (st->win == 0 && !(st->cfg.window_s > FNAV_R(0.0))) {
+        /* never initialised (zeroed, as static storage is): init sets a
+         * window; tested only before the window is known, so the common
+         * push pays nothing for it */
+        return FNAV_E_STATE;
     }
     lo = st->n_raw - st->half; /* first sample of the next raw decision's window */
     if (st->finished || st->n_in - st->n_out >= FNAV_STANCE_MAX_WINDOW ||
@@ -569,10 +572,10 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     if (st == NULL || out == NULL) {
         return FNAV_E_ARG;
     }
-    if (!(st->cfg.window_s > FNAV_R(0.0))) {
-        return FNAV_E_STATE; /* never initialised: its decisions would divide by a zero sigma */
-    }
     if (st->win == 0) {
+        if (!(st->cfg.window_s > FNAV_R(0.0))) {
+            return FNAV_E_STATE; /* never initialised: its decisions would divide by a zero sigma */
+        }
         return (st->finished && st->n_in == 0) ? FNAV_END : FNAV_AGAIN;
     }
     /* raw decisions for every sample whose window is complete */
