@@ -177,8 +177,8 @@ static inline void fnav_cm_ns_scale_init(fnav_cm_ns_scale_t *s, uint32_t hz, uin
         }
     }
     s->mul = m;
-    s->c_max = c_max;
-    s->shift = 32u - k;
+    s->c_max = c_max & 0xffffffu; /* <= 0xffffff (above): the mask only says so to -Wconversion */
+    s->shift = (32u - k) & 0x7fu;
     s->exact = 1u;
 }
 
