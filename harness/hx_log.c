@@ -1648,16 +1648,76 @@ static int data_follows(hx_reader_t *r)
     return data;
 }
 
+/* A log without a header, its columns given by number (--columns t=1,
+ * ax=2,...: 1 the first field): when the first line is data and every
+ * column --columns names is a number, the columns read are those, the
+ * time's too where a time is required (else --input-rate's). 1 applied
+ * (a warning says so; the caller reads the line again as data), 0 not
+ * numbers (the first line's error as before), -1 error (err set). */
+static int numbered_columns(hx_reader_t *r, int n, int time_required)
+{
+    int k, given = 0, col[8];
+    for (k = 0; k < 8; k++) {
+        const char *v = r->layout.names[k];
+        char *end;
+        long c;
+        col[k] = -1;
+        if (v[0] == '\0') {
+            continue;
+        }
+        c = strtol(v, &end, 10);
+        if (!isdigit((unsigned char)v[0]) || *end != '\0') {
+            return 0; /* a name: a header is expected */
+        }
+        if (c < 1 || c > n) {
+            set_err(r, "%s:%ld: --columns %s=%s: the line has %d fields, numbered 1 to %d", r->path,
+                    r->stats.lines, k_csv_names[k], v, n, n);
+            return -1;
+        }
+        col[k] = (int)c - 1;
+        given |= 1 << k;
+    }
+    if (given == 0) {
+        return 0;
+    }
+    for (k = 0; k < 7; k++) {
+        if (!(given & (1 << k)) && (k > 0 || time_required)) {
+            set_err(r, "%s:%ld: the log has no header and --columns numbers some columns but not %s: give each "
+                       "of t,ax,ay,az,gx,gy,gz by number (t=1,ax=2,...)%s",
+                    r->path, r->stats.lines, k_csv_names[k], k == 0 ? ", or the rate with --input-rate HZ" : "");
+            return -1;
+        }
+    }
+    r->col_t = col[0];
+    r->col_temp = col[7];
+    r->ncols_needed = 0;
+    r->missing_col = -1;
+    for (k = 0; k < 3; k++) {
+        r->col_a[k] = col[1 + k];
+        r->col_g[k] = col[4 + k];
+    }
+    for (k = 0; k < 8; k++) {
+        r->ncols_needed = col[k] + 1 > r->ncols_needed ? col[k] + 1 : r->ncols_needed;
+    }
+    r->hdr_fields = n;
+    add_warn(r, "%s:%ld: no header: the columns read by the numbers --columns gives", r->path, r->stats.lines);
+    return 1;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
     int n, i, rc, total, dc_line, tried = 0, sep_given = 0, consensys;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+    z_off_t hpos = 0;
+    long hlines = 0;
     for (i = 0; i < 8; i++) {
         names[i] = names_in[i];
     }
     for (;;) {
+        hpos = gztell(r->gz); /* the header line's start: a log without one reads it again */
+        hlines = r->stats.lines;
         rc = read_line(r);
         if (rc <= 0) {
             if (rc == 0) {
@@ -1727,6 +1787,12 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
+    if (r->meta.format == HX_FMT_CSV && !dc_line && all_numeric(f, n)) {
+        const int h = numbered_columns(r, n, time_required);
+        if (h != 0) {
+            return h < 0 ? -1 : read_again_from(r, hpos, hlines);
+        }
+    }
     consensys = r->meta.format == HX_FMT_CSV && hx_names_consensys(f, n);
     for (;;) {
         i = find_columns(r, names, f, n, time_required);
@@ -1815,9 +1881,13 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
                 r->path, r->stats.lines, dc_first);
     } else if (all_numeric(f, n)) {
-        set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
+        set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)%s",
                 r->path, r->stats.lines, hx_format_name(r->meta.format),
-                r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
+                r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md",
+                r->meta.format == HX_FMT_CSV && n >= 6 /* fields enough for the six channels */
+                    ? "; a log without one: give its columns by number, --columns t=1,ax=2,ay=3,az=4,gx=5,gy=6,"
+                      "gz=7 in the interchange order (and --units for other units)"
+                    : "");
     } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0') {
         /* a name the user gave: say where it came from */
         set_err(r, "%s:%ld: header has no column '%s' (the name --columns gives %s)", r->path,

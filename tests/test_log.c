@@ -2270,6 +2270,76 @@ static void test_units_row(void **state)
     unlink(p);
 }
 
+/* A log without a header, its columns given by number: read from the
+ * first line (a warning); a column not numbered, a number past the line's
+ * fields and names mixed in are refused, and without --columns the
+ * first line's error names the remedy. */
+/* read_all under --columns map (NULL: none) */
+static int read_mapped(const char *path, const char *map, double rate, readall_t *ra)
+{
+    static hx_csv_layout_t l;
+    char err[512];
+    int rc;
+    hx_csv_layout_default(&l);
+    if (map != NULL) {
+        assert_int_equal(hx_csv_columns_parse(&l, map, err, sizeof err), 0);
+        l.option = "--columns";
+    }
+    hx_reader_set_layout(map != NULL ? &l : NULL);
+    rc = read_all(path, HX_FMT_AUTO, rate, ra, NULL);
+    hx_reader_set_layout(NULL);
+    return rc;
+}
+
+static void test_numbered_columns(void **state)
+{
+    char p[256];
+    readall_t ra;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "0,1,2,9.8,0.1,0.2,0.3\n0.01,1,2,9.8,0.1,0.2,0.3\n0.02,1,2,9.8,0.1,0.2,0.3\n");
+    assert_int_equal(read_mapped(p, NULL, 0.0, &ra), -1);
+    if (strstr(ra.err, ":1: the first line is data, not a header") == NULL ||
+        strstr(ra.err, "give its columns by number, --columns t=1,ax=2,ay=3,az=4,gx=5,gy=6,gz=7") == NULL) {
+        fail_msg("no header: %s", ra.err);
+    }
+    /* the gyro first: the columns as numbered, not as the line's order */
+    assert_int_equal(read_mapped(p, "t=1,gx=2,gy=3,gz=4,ax=5,ay=6,az=-7", 0.0, &ra), 0);
+    assert_int_equal(ra.end, FNAV_END);
+    assert_int_equal(ra.n, 3); /* the first line is data */
+    assert_true(ra.s[0].t_ns == 0 && ra.s[2].t_ns == 20000000);
+    assert_true((float)ra.s[0].gyro_rps[0] == 1.0f && (float)ra.s[0].gyro_rps[2] == 9.8f);
+    assert_true((float)ra.s[0].accel_mps2[0] == 0.1f && (float)ra.s[0].accel_mps2[2] == -0.3f);
+    if (strstr(ra.warn, ":1: no header: the columns read by the numbers --columns gives") == NULL) {
+        fail_msg("warnings: %s", ra.warn);
+    }
+    /* no time: refused, naming t and --input-rate; with the rate read */
+    assert_int_equal(read_mapped(p, "ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), -1);
+    if (strstr(ra.err, "numbers some columns but not t: give each of t,ax,ay,az,gx,gy,gz by number") == NULL ||
+        strstr(ra.err, "--input-rate HZ") == NULL) {
+        fail_msg("no t: %s", ra.err);
+    }
+    assert_int_equal(read_mapped(p, "ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 50.0, &ra), 0);
+    assert_int_equal(ra.n, 3);
+    assert_true(ra.s[1].t_ns == 20000000); /* sample 1 at 1 / 50 s */
+    /* a number past the fields */
+    assert_int_equal(read_mapped(p, "t=1,ax=2,ay=3,az=4,gx=5,gy=6,gz=8", 0.0, &ra), -1);
+    if (strstr(ra.err, "--columns gz=8: the line has 7 fields, numbered 1 to 7") == NULL) {
+        fail_msg("past the fields: %s", ra.err);
+    }
+    /* names mixed in: a header is expected, the first line's error */
+    assert_int_equal(read_mapped(p, "t=time,ax=2", 0.0, &ra), -1);
+    if (strstr(ra.err, ":1: the first line is data, not a header") == NULL) {
+        fail_msg("names mixed: %s", ra.err);
+    }
+    /* a header whose names are numbers is still a header */
+    write_text(p, "t,1,2,3,4,5,6\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_mapped(p, "ax=1,ay=2,az=3,gx=4,gy=5,gz=6", 0.0, &ra), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true((float)ra.s[0].accel_mps2[2] == 9.8f);
+    unlink(p);
+}
+
 /* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
  * exactly the formats --from takes, in order: a new importer that misses
  * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
@@ -5170,6 +5240,7 @@ int main(void)
         cmocka_unit_test(test_datetime_stamps),
         cmocka_unit_test(test_consensys),
         cmocka_unit_test(test_units_row),
+        cmocka_unit_test(test_numbered_columns),
         cmocka_unit_test(test_ros_euroc),
         cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_fuzz_seed_formats),
