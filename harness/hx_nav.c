@@ -1203,7 +1203,17 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is %s",
                      f_rest_mps2, g, fix);
     }
-    if (gyro_max_rps > HX_GYRO_MAX_RPS) {
+    if (gyro_max_rps > HX_GYRO_MAX_RPS && csv != NULL && csv->gyr_scale != 1.0) {
+        /* read in a unit given or named (deg/s, mdps): beyond any gyro
+         * in that unit too, so no other unit of --units explains it (told
+         * "not in rad/s but probably in deg/s" with gyro=deg/s given, a
+         * user went round in a circle: raw int16 counts, 16.4 a deg/s) */
+        const char *u = hx_gyro_unit_name(csv->gyr_scale);
+        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as %s (%.4g %s), beyond the range of any "
+                     "MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (scale them by the "
+                     "sensor's sensitivity, LSB per deg/s, before reading them)",
+                     gyro_max_rps, u, gyro_max_rps / csv->gyr_scale, u, HX_GYRO_MAX_RPS);
+    } else if (gyro_max_rps > HX_GYRO_MAX_RPS) {
         char fix[192] = "";
         if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
             snprintf(fix, sizeof fix, " but probably in deg/s (%s)", fix_dps(csv, &want, give, sizeof give));

@@ -1471,6 +1471,14 @@ d = max(abs(float(r[i]) - float(s[i])) for r, s in zip(a[1:], b[1:]) for i in ix
 print("max position difference", d)
 sys.exit(0 if d < 1e-3 else 1)
 PYEOF
+# raw int16 counts (2048 a g, 16.4 a deg/s) read with gyro=deg/s: beyond any gyro in deg/s too, so raw
+# counts are named, not "not in rad/s but probably in deg/s" with deg/s given (a user went round in a circle)
+awk -F, 'NR == 1 { print; next } { printf "%s,%d,%d,%d,%d,%d,%d\n", $1, $2 * 2048 / 9.80665, $3 * 2048 / 9.80665, $4 * 2048 / 9.80665, $5 * 57.29577951308232 * 16.4, $6 * 57.29577951308232 * 16.4, $7 * 57.29577951308232 * 16.4 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_counts.csv"
+expect_exit 1 "raw counts read with gyro=deg/s" "$H" replay "$T/in_counts.csv" --quiet --units accel=mg,gyro=deg/s
+expect_err "the gyroscope reaches .* rad/s on one axis read as deg/s (.* deg/s), beyond the range of any MEMS gyro .*: raw counts? (scale them by the sensor's sensitivity" \
+    "raw counts read as deg/s: named as raw counts"
+grep -q "probably in deg/s" "$T/err" && fail "raw counts read as deg/s: told deg/s again" || pass "raw counts read as deg/s: not told deg/s again"
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
 # the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
 "$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1
