@@ -98,6 +98,7 @@ struct hx_reader {
     hx_mtmgr_t mt;              /* mtmanager: columns, time source, counters (hx_xsens.h) */
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
+    long dc_first;              /* the first line whose decimal commas were read as points (0: none) */
     int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
     int kalibr;                 /* csv: Kalibr's IMU CSV header matched (hx_names_kalibr) */
     int sensorlog;              /* csv: SensorLog's header matched (hx_names_sensorlog) */
@@ -423,6 +424,37 @@ static int decimal_comma(const char *s)
 static const char *not_a_number(const char *field)
 {
     return decimal_comma(field) ? "not a number" DECIMAL_COMMA_HINT : "not a number";
+}
+
+/* The decimal commas of a row whose fields are separated by semicolons or
+ * tabs, as a European-locale spreadsheet exports it ("0;-0,5;9,81"):
+ * read as points, the columns read only and each a well-formed number
+ * (decimal_comma: "1.234,5" stays an error), the first such line said in
+ * a warning. A comma-separated row is left as it is: "0,5" there is two
+ * fields, ambiguous, and refused (DECIMAL_COMMA_HINT). */
+static void decimal_commas_read(hx_reader_t *r, char **f, int n)
+{
+    int cols[8], k;
+    cols[0] = r->col_t;
+    cols[7] = r->col_temp;
+    for (k = 0; k < 3; k++) {
+        cols[1 + k] = r->col_a[k];
+        cols[4 + k] = r->col_g[k];
+    }
+    for (k = 0; k < 8; k++) {
+        char *c;
+        if (cols[k] < 0 || cols[k] >= n || !decimal_comma(f[cols[k]])) {
+            continue;
+        }
+        if (r->dc_first == 0) {
+            r->dc_first = r->stats.lines;
+            add_warn(r, "%s:%ld: numbers with a decimal comma ('%.40s') read as decimals (the fields are "
+                        "%s-separated)",
+                     r->path, r->stats.lines, f[cols[k]], r->delim == ';' ? "semicolon" : "tab");
+        }
+        c = strchr(f[cols[k]], ',');
+        *c = '.';
+    }
 }
 
 /* Whether a line is numbers separated by semicolons, tabs or blanks, at
@@ -2498,6 +2530,9 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     n = split_join(r->line, r->delim, f, HX_MAX_COLS, r->date_join != 0);
     r->nfields = n;
+    if (r->delim == ';' || r->delim == '\t') {
+        decimal_commas_read(r, f, n);
+    }
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
             set_err(r, "%s:%ld: not a GX2 data line", r->path, r->stats.lines);

@@ -1808,29 +1808,38 @@ static void test_detect_variants(void **state)
     }
 }
 
-/* Numbers with a decimal comma (a European-locale export): an error that
- * says so, at the line, in every reader (not "column 2 ('0,5') is not a
- * number", and of the headerless OpenShoe file "header has no column
- * 't'"). */
+/* Numbers with a decimal comma (a European-locale export). Where the
+ * fields are separated by semicolons or tabs they are read as decimals,
+ * the first such line named in a warning (refused before 2026-12-06, when
+ * merge already read them); where the separator is the comma itself (or a
+ * headerless file, taken for the OpenShoe set), or the number is no
+ * well-formed decimal, an error that says so, at the line (not "column 2
+ * ('0,5') is not a number", and of the headerless OpenShoe file "header
+ * has no column 't'"). */
 static void test_decimal_comma(void **state)
 {
     static const struct {
         const char *text, *where;
     } cases[] = {
-        { "t;ax;ay;az;gx;gy;gz\n0;0,5;0,2;9,8;0,1;0,2;0,3\n", ":2: column 2 ('0,5')" },
-        { "t;ax;ay;az;gx;gy;gz\n0,01;0.5;0.2;9.8;0.1;0.2;0.3\n", ":2: time ('0,01')" },
         { "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n"
           "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n",
           ":1: the first line is numbers with a decimal comma ('0,19594386')" },
-        { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
-          "0\t5,09\t0,40\t8,92\t-0,002\t0,008\t-0,017\n",
-          ":3: column 2 ('5,09')" },
         /* comma-separated, each number quoted (a spreadsheet quotes a field
          * that holds the separator): the quoted commas split the fields, and
          * "0,00","0,5",... loaded as t 0, ax 0, ay 5, ... without a word */
         { "t,ax,ay,az,gx,gy,gz\n\"0,00\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n"
           "\"0,01\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n",
           ":2: column 2 ('0,5')" },
+    };
+    static const struct {
+        const char *text, *warn;
+        int64_t t1_ns;
+    } read[] = {
+        { "t;ax;ay;az;gx;gy;gz\n0;0,5;0,2;9,8;0,1;0,2;0,3\n0,01;0.5;0.2;9.8;0.1;0.2;-0,3\n",
+          ":2: numbers with a decimal comma ('0,5') read as decimals (the fields are semicolon-separated)", 10000000 },
+        { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+          "0\t0,5\t0,2\t9,8\t0,1\t0,2\t0,3\n1\t0,5\t0,2\t9,8\t0,1\t0,2\t-0,3\n",
+          ":3: numbers with a decimal comma ('0,5') read as decimals (the fields are tab-separated)", 10000000 },
     };
     size_t i;
     (void)state;
@@ -1845,6 +1854,35 @@ static void test_decimal_comma(void **state)
             fail_msg("case %zu: %s", i, err);
         }
         hx_log_free(&log);
+        unlink(p);
+    }
+    for (i = 0; i < sizeof read / sizeof read[0]; i++) {
+        char p[256];
+        readall_t ra;
+        tmp_path(p, sizeof p, i == 0 ? ".csv" : "_lf.txt");
+        write_text(p, read[i].text);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+        assert_int_equal(ra.end, FNAV_END);
+        assert_int_equal(ra.n, 2);
+        assert_true(ra.s[1].t_ns - ra.s[0].t_ns == read[i].t1_ns);
+        assert_true((float)ra.s[0].accel_mps2[0] == 0.5f && (float)ra.s[0].accel_mps2[2] == 9.8f);
+        assert_true((float)ra.s[1].gyro_rps[2] == -0.3f);
+        if (strstr(ra.warn, read[i].warn) == NULL) {
+            fail_msg("read %zu: %s", i, ra.warn);
+        }
+        unlink(p);
+    }
+    {
+        /* a thousands separator is no decimal comma: refused at its line */
+        char p[256];
+        readall_t ra;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, "t;ax;ay;az;gx;gy;gz\n0;1.234,5;0;9,8;0;0;0\n");
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+        assert_int_equal(ra.n, 0);
+        if (strstr(ra.err, ":2: column 2 ('1.234,5') is not a number") == NULL) {
+            fail_msg("thousands: %s", ra.err);
+        }
         unlink(p);
     }
 }

@@ -464,9 +464,24 @@ done
 { printf '\357\273\277'; head -3 "$T/a.csv"; } >"$T/bom3.csv"
 expect_exit 0 "BOM on a short log" "$H" info "$T/bom3.csv"
 expect_out_re "^samples     2$" "BOM: the header is a header, not a bad line"
+# semicolons and decimal commas (a European-locale export): read as the original, with a warning
 tr ',.' ';,' <"$T/a.csv" >"$T/deccomma.csv"
-expect_exit 1 "decimal commas" "$H" info "$T/deccomma.csv"
-expect_err "deccomma.csv:2: column 2 ('-4,84234142') is not a number" "decimal comma named"
+expect_exit 0 "decimal commas" "$H" info "$T/deccomma.csv" --json "$T/deccomma.json"
+expect_err "deccomma.csv:2: numbers with a decimal comma ('0,000000000') read as decimals (the fields are semicolon-separated)" \
+    "decimal commas: read, said"
+expect_exit 0 "decimal commas: the original" "$H" info "$T/a.csv" --json "$T/a_info.json"
+"${PY:-/usr/bin/python3}" - "$T/deccomma.json" "$T/a_info.json" <<'PYEOF' && pass "decimal commas: the original's samples and figures" || fail "decimal commas: figures differ from the original's"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for k in ("file", "log", "command", "path"):
+    a.pop(k, None); b.pop(k, None)
+print([k for k in a if a.get(k) != b.get(k)])
+sys.exit(0 if a == b else 1)
+PYEOF
+# with commas between the fields a decimal comma is ambiguous: refused, said
+printf 't,ax,ay,az,gx,gy,gz\n"0,00","0,5","0,2","9,8","0,1","0,2","0,3"\n' >"$T/deccomma_c.csv"
+expect_exit 1 "decimal commas between commas" "$H" info "$T/deccomma_c.csv"
+expect_err "deccomma_c.csv:2: column 2 ('0,5') is not a number (a decimal comma" "decimal comma with comma separators: refused, named"
 : >"$T/empty.csv"
 expect_exit 1 "empty file" "$H" info "$T/empty.csv"
 expect_err "empty.csv: empty file" "empty file said"

@@ -210,6 +210,9 @@ def main():
         b'gyroRotationX(rad/s),gyroRotationY(rad/s),gyroRotationZ(rad/s),motionUserAccelerationX(G)\n'
         b'2019-03-19 13:12:49.592 +0100,0,266943.391,0.01,-0.02,-1.0,266943.392,0.001,0.002,0.003,0.0\n'
         b'2019-03-19 13:12:49.602 +0100,1,266943.401,0.01,-0.02,-1.0,266943.402,0.001,0.002,0.003,0.0\n')
+    # semicolons and decimal commas, read as decimals (decimal_commas_read)
+    put('log_reader', 'csv_semicolon_decimal_comma', bytes([FMT['auto']]) +
+        b't;ax;ay;az;gx;gy;gz\n0;0,5;-0,2;9,8;0,1;0,2;0,3\n0,01;1.234,5;0;9,8e+00;0;0;0\n')
     # a row of units under a plain header (units_row)
     put('log_reader', 'csv_units_row', bytes([FMT['auto']]) +
         b'time,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\ns,g,g,g,deg/s,deg/s,deg/s\n'
