@@ -1963,12 +1963,20 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
              * none) */
             const double run_max = (double)(nav.stance.lag + 1);
             const double cyc_max = run_max / ((double)cfg->stance.min_zupt_cycle * fs);
-            size_t k = 0, i, over = 0;
+            size_t k = 0, i, over = 0, gait = 0;
             double *iv = cycle_intervals(traj, &k);
             for (i = 0; i < k; i++) {
-                over += iv[i] > cyc_max;
+                /* an interval over FNAV_STANCE_CYCLE_MAX_S spans a stand,
+                 * which clears the detector's cycle (no run is scaled by
+                 * it): no gait cycle, not counted (a 30 s stand in the
+                 * 820 Hz walk was "1 of the log's 51") */
+                if (iv[i] <= (double)FNAV_STANCE_CYCLE_MAX_S) {
+                    gait++;
+                    over += iv[i] > cyc_max;
+                }
             }
             free(iv);
+            k = gait;
             if (over > 0u) {
                 hx_warn(cmd,
                         "%s: at %.0f Hz the stance detector's ring of %d samples caps the cycle-scaled ZUPT run at "
