@@ -1736,6 +1736,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         remedy_rate = raw.meta.rate_ignored ? 0.0 : in_rate;
         if (traj != NULL) {
             traj->in_format = in_fmt;
+            traj->rate_assumed_hz = in_fmt == HX_FMT_OS820 && !(in_rate > 0.0) ? 820.0 : 0.0;
         }
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
@@ -1780,6 +1781,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         remedy_rate = hx_reader_meta(r)->rate_ignored ? 0.0 : in_rate;
         if (traj != NULL) {
             traj->in_format = in_fmt;
+            traj->rate_assumed_hz = in_fmt == HX_FMT_OS820 && !(in_rate > 0.0) ? 820.0 : 0.0;
         }
     }
     {
@@ -2607,6 +2609,18 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
     }
+    if (t->rate_assumed_hz > 0.0 && s->strides < 3 && s->duration_s > 3.0 && s->stance_fraction < 0.9 &&
+        !hx_nav_strides_too_short(s)) {
+        /* a walk of six bare numbers a line at another rate, read at the
+         * OpenShoe set's 820 Hz: 100 Hz read so made 1 stride in 8 s where
+         * 47 were walked (too few cycles for the note below) */
+        fprintf(f, "note              the rate is assumed, %.0f Hz (the OpenShoe set's: the log has no time stamps), "
+                   "and the foot moves in %.0f %% of the aligned frames with %ld stride%s in %.1f s: a log recorded "
+                   "at another rate is read too fast or too slow by the ratio of the two, and its strides are lost; "
+                   "give its rate with --input-rate HZ\n",
+                t->rate_assumed_hz, 100.0 * (1.0 - s->stance_fraction), s->strides, s->strides == 1 ? "" : "s",
+                s->duration_s);
+    }
     if (hx_nav_strides_too_short(s)) {
         fprintf(f, "note              the gait cycles last %.2f s (median of %ld, from one motion of the foot to the "
                    "next), %.0f steps/min: faster than any foot (a sprint is about 280); the time axis is compressed: "
@@ -2699,6 +2713,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddStringToObject(root, "command", command);
     cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
+    cJSON_AddItemToObject(root, "rate_assumed_hz", num(t->rate_assumed_hz > 0.0 ? t->rate_assumed_hz : (double)NAN));
     cJSON_AddNumberToObject(root, "window_samples", t->window);
     if (t->have_config) {
         /* the configuration that ran, as the summary's config line (not

@@ -116,6 +116,7 @@ typedef struct {
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
     char rate_src[128];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
     hx_format_t in_format;       /**< the format read (replay; HX_FMT_AUTO: not said), which chooses the coarse-stamps note's remedy */
+    double rate_assumed_hz;      /**< the rate the reader assumed for a log without stamps or --input-rate (the OpenShoe 820 Hz set's; 0: none) */
     double max_gap_s;            /**< the navigator's time-jump limit (fnav_nav_config_t; 0: not known, no interval is a jump) */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;

@@ -1552,6 +1552,19 @@ grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too
 json "$T/bare6_200.json" 'j["gait_cycles"]["too_short"] is False and j["gait_cycles"]["median_s"] >= 0.4' &&
     pass "replay --json at the right rate: gait_cycles.too_short false" ||
     fail "replay --json at the right rate: $(grep -A3 '"gait_cycles"' "$T/bare6_200.json" | tr -d '\n\t')"
+# at 100 Hz read as 820 the detector loses the strides (1 in 8 s), too few cycles for the note above: the
+# assumed rate is named with the remedy, and the JSON says it (rate_assumed_hz); not at the right rate
+"$H" sim --motion walk --duration 60 --rate 100 --out "$T/bare_w100.csv" >/dev/null 2>&1
+awk -F, 'NR > 1 { print $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/bare_w100.csv" > "$T/bare6_100.txt"
+expect_exit 0 "a 100 Hz walk as six bare columns (820 Hz assumed)" "$H" replay "$T/bare6_100.txt" --json "$T/bare6_100.json"
+expect_out_re "^note +the rate is assumed, 820 Hz \(the OpenShoe set's: the log has no time stamps\), and the foot moves in [0-9]+ % of the aligned frames with [0-2] strides? in [0-9.]+ s: .*give its rate with --input-rate HZ" \
+    "a lost walk at an assumed rate: the rate named, with the remedy"
+json "$T/bare6_100.json" 'j["rate_assumed_hz"] == 820' && pass "replay --json: rate_assumed_hz 820" ||
+    fail "replay --json: rate_assumed_hz $(grep rate_assumed "$T/bare6_100.json")"
+expect_exit 0 "the same walk with --input-rate 100" "$H" replay "$T/bare6_100.txt" --input-rate 100 --json "$T/bare6_100r.json"
+grep -q "the rate is assumed" "$T/out" && fail "the rate given: still called assumed" || pass "the rate given: no assumed-rate note"
+json "$T/bare6_100r.json" 'j["rate_assumed_hz"] is None and j["strides"] >= 40' && pass "replay --json at the rate given: rate_assumed_hz null, the strides" ||
+    fail "replay --json at the rate given: $(grep -E 'rate_assumed|"strides"' "$T/bare6_100r.json")"
 # a slow gait (under 70 steps/min) is named, with what guards against it: in a slow swing the foot's deceleration
 # before the landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up
 # to a third of their length, scripts/probe_slow.py). The simulator's 60 steps/min
