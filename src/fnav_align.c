@@ -138,7 +138,16 @@ static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_peri
         /* posterior of a zero-mean prior (sd s0) and the mean (se) */
         se2 = mean_se2(p, vg, i);
         r->gyro_mean_se_rps.v[i] = fnav_sqrt(se2);
-        if (s02 > FNAV_R(0.0)) {
+        if (s02 > FNAV_R(0.0) && duration_s(p) < al->cfg.min_still_s) {
+            /* a period shorter than min_still_s (the walk starts early:
+             * the quietest such period, fnav_align.h): the foot's
+             * rotation before its first step, or within a stance, is a
+             * smooth rate that no statistic of so short a window tells
+             * from a bias (a sway angle of a degree over 0.3 s is 3 deg/s),
+             * so the bias is the prior's, 0 with sd s0 */
+            r->gyro_bias_rps.v[i] = FNAV_R(0.0);
+            r->gyro_bias_sd_rps.v[i] = al->cfg.gyro_bias_prior_sd_rps;
+        } else if (s02 > FNAV_R(0.0)) {
             r->gyro_bias_rps.v[i] = r->gyro_mean_rps.v[i] * s02 / (s02 + se2);
             r->gyro_bias_sd_rps.v[i] = fnav_sqrt(s02 * se2 / (s02 + se2));
         } else {

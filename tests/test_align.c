@@ -519,6 +519,49 @@ static void test_short_period_fallback(void **state)
     assert_int_equal((int)al.result.samples, 25);
 }
 
+/* The gyro bias of a period shorter than min_still_s (the walk starts
+ * early) is the prior's, 0 with sd gyro_bias_prior_sd_rps: a smooth
+ * rotation of the foot before its first step reads as a constant rate that
+ * no statistic of the window tells from a bias (the batch means agree, so
+ * the shrinkage kept it). A period of min_still_s or more keeps the
+ * posterior mean; roll and pitch come from both; prior 0 (no prior) keeps
+ * the plain mean. Cut shared walks: scripts/cut_still.py. */
+static void test_short_period_bias_prior(void **state)
+{
+    static const long n_of[2] = { 31, 61 }; /* 0.3 s (short) and 0.6 s at 100 Hz */
+    fnav_align_config_t c = fnav_align_config_default;
+    int q, prior;
+    (void)state;
+    for (prior = 0; prior < 2; prior++) {
+        c.gyro_bias_prior_sd_rps = prior ? fnav_align_config_default.gyro_bias_prior_sd_rps : FNAV_R(0.0);
+        for (q = 0; q < 2; q++) {
+            fnav_align_t al;
+            long k;
+            assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+            for (k = 0; k < n_of[q]; k++) {
+                fnav_sample_t s = still_sample(k, 100.0, 0.0);
+                s.gyro_rps[2] = FNAV_R(0.035); /* 2 deg/s: a turn of 0.6 deg in 0.3 s */
+                assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+            }
+            {
+                fnav_sample_t s = still_sample(n_of[q], 100.0, 0.0);
+                assert_int_equal(fnav_align_push(&al, &s, 0, FNAV_R(1e7)), FNAV_OK); /* the step */
+            }
+            assert_int_equal((int)al.result.samples, (int)n_of[q]);
+            /* the mean rate is kept as measured, the tilt from the mean f */
+            FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[2], 0.035, 1e-6, 0.0);
+            FNAV_ASSERT_CLOSE(al.result.euler_rad.v[0], atan2(0.2, 9.81), 1e-5, 0.0);
+            if (prior && q == 0) {
+                assert_true(al.result.gyro_bias_rps.v[2] == FNAV_R(0.0) && al.result.gyro_bias_rps.v[0] == FNAV_R(0.0));
+                assert_true(al.result.gyro_bias_sd_rps.v[2] == c.gyro_bias_prior_sd_rps);
+            } else {
+                /* a constant rate: the batch means agree (se ~ 0), the mean kept */
+                FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[2], 0.035, 1e-4, 0.0);
+            }
+        }
+    }
+}
+
 /* finish when a short period was kept and the current one does not
  * qualify (shorter than min_still_s and noisier than the kept one): the
  * kept period aligns, as at the first motion in test_short_period_fallback.
@@ -851,6 +894,7 @@ int main(void)
         cmocka_unit_test(test_rounded_variance_clamped),
         cmocka_unit_test(test_finish),
         cmocka_unit_test(test_short_period_fallback),
+        cmocka_unit_test(test_short_period_bias_prior),
         cmocka_unit_test(test_finish_keeps_best),
         cmocka_unit_test(test_gyro_bias_posterior),
         cmocka_unit_test(test_zero_mean_period),

@@ -30,7 +30,12 @@
  * MEMS gyro's turn-on bias) updated with that mean:
  *   b_g = w k,  k = s0^2 / (s0^2 + se^2),  sd(b_g) = s0 se / sqrt(s0^2 + se^2).
  * A clean still period (se << s0) gives the mean; a swaying one is shrunk
- * towards zero.
+ * towards zero. A period shorter than min_still_s (the short-period
+ * fallback above) gives roll and pitch only: its gyro bias is the prior's,
+ * 0 with sd s0, since the foot's smooth turn before its first step is a
+ * constant rate over so short a window, which no statistic of it tells
+ * from a bias (docs/navigation.md, "Short start"); with s0 = 0 (no prior)
+ * it is the plain mean, as for every period.
  *
  * With the mean specific force f and the mean rate w over the still period
  * (navigation frame z down, f_b = C_bn (0, 0, -g) at rest):
