@@ -1686,28 +1686,52 @@ static int data_follows(hx_reader_t *r)
  * time's too where a time is required (else --input-rate's). 1 applied
  * (a warning says so; the caller reads the line again as data), 0 not
  * numbers (the first line's error as before), -1 error (err set). */
-static int numbered_columns(hx_reader_t *r, int n, int time_required)
+static int numbered_columns(hx_reader_t *r, char **f, int n, int time_required)
 {
-    int k, given = 0, col[8];
-    for (k = 0; k < 8; k++) {
-        const char *v = r->layout.names[k];
+    int k, given = 0, col[8], all_named = 1, index_row = 1, col_tns = -1;
+    for (k = 0; k <= 8; k++) { /* 8: tns */
+        const char *v = k < 8 ? r->layout.names[k] : r->layout.tns;
+        if (v[0] != '\0' && (!isdigit((unsigned char)v[0]) || strspn(v, "0123456789") != strlen(v))) {
+            return 0; /* a name: a header is expected */
+        }
+        all_named &= v[0] == '\0' || hx_find_col(f, n, v) >= 0;
+    }
+    {
+        /* 0,1,2,... or 1,2,3,...: whole numbers counting the columns */
         char *end;
+        const long base = strtol(f[0], &end, 10);
+        index_row = n > 1 && (base == 0 || base == 1);
+        for (k = 0; k < n && index_row; k++) {
+            index_row = strtol(f[k], &end, 10) == base + k && *end == '\0' && end != f[k];
+        }
+    }
+    if (all_named || index_row) {
+        /* every number given is a field of the line (a header of numbers:
+         * read by name, as before), or the line counts its columns from 0
+         * or 1 (pandas' header of an array): a header */
+        return 0;
+    }
+    for (k = 0; k <= 8; k++) {
+        const char *v = k < 8 ? r->layout.names[k] : r->layout.tns;
         long c;
-        col[k] = -1;
+        if (k < 8) {
+            col[k] = -1;
+        }
         if (v[0] == '\0') {
             continue;
         }
-        c = strtol(v, &end, 10);
-        if (!isdigit((unsigned char)v[0]) || *end != '\0') {
-            return 0; /* a name: a header is expected */
-        }
+        c = strtol(v, NULL, 10);
         if (c < 1 || c > n) {
             set_err(r, "%s:%ld: --columns %s=%s: the line has %d fields, numbered 1 to %d", r->path,
-                    r->stats.lines, k_csv_names[k], v, n, n);
+                    r->stats.lines, k < 8 ? k_csv_names[k] : "tns", v, n, n);
             return -1;
         }
-        col[k] = (int)c - 1;
-        given |= 1 << k;
+        if (k == 8) {
+            col_tns = (int)c - 1;
+        } else {
+            col[k] = (int)c - 1;
+            given |= 1 << k;
+        }
     }
     if (given == 0) {
         return 0;
@@ -1730,6 +1754,16 @@ static int numbered_columns(hx_reader_t *r, int n, int time_required)
     }
     for (k = 0; k < 8; k++) {
         r->ncols_needed = col[k] + 1 > r->ncols_needed ? col[k] + 1 : r->ncols_needed;
+    }
+    if (col_tns >= 0) {
+        if (r->col_t < 0 || r->layout.time_digits != 9) {
+            set_err(r, "%s:%ld: --columns tns=%s adds nanoseconds to the whole seconds of a time column: %s",
+                    r->path, r->stats.lines, r->layout.tns,
+                    r->col_t < 0 ? "give the seconds' column with t=N" : "its unit must be s (--units time=s)");
+            return -1;
+        }
+        r->col_tns = col_tns;
+        r->ncols_needed = col_tns + 1 > r->ncols_needed ? col_tns + 1 : r->ncols_needed;
     }
     r->hdr_fields = n;
     add_warn(r, "%s:%ld: no header: the columns read by the numbers --columns gives", r->path, r->stats.lines);
@@ -1820,7 +1854,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
     if (r->meta.format == HX_FMT_CSV && !dc_line && all_numeric(f, n)) {
-        const int h = numbered_columns(r, n, time_required);
+        const int h = numbered_columns(r, f, n, time_required);
         if (h != 0) {
             return h < 0 ? -1 : read_again_from(r, hpos, hlines);
         }
@@ -1916,9 +1950,12 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)%s",
                 r->path, r->stats.lines, hx_format_name(r->meta.format),
                 r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md",
-                r->meta.format == HX_FMT_CSV && n >= 6 /* fields enough for the six channels */
+                r->meta.format == HX_FMT_CSV && n >= 7 /* fields enough for a time and the six channels */
                     ? "; a log without one: give its columns by number, --columns t=1,ax=2,ay=3,az=4,gx=5,gy=6,"
                       "gz=7 in the interchange order (and --units for other units)"
+                : r->meta.format == HX_FMT_CSV && n == 6
+                    ? "; a log without one: give its columns by number and its rate, --columns ax=1,ay=2,az=3,"
+                      "gx=4,gy=5,gz=6 --input-rate HZ in the interchange order (and --units for other units)"
                     : "");
     } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0') {
         /* a name the user gave: say where it came from */

@@ -772,8 +772,8 @@ hx_name_unit_t hx_name_unit_of_text(const char *text)
     }
     for (i = 0; folded[i] != '\0'; i++) {
         const char ch = folded[i];
-        if (ch == ' ' || ch == '\t' || ch == '"' || ch == '\'' || ch == '(' || ch == ')' || ch == '\r' ||
-            ch == '\n') {
+        if (ch == ' ' || ch == '\t' || ch == '"' || ch == '\'' || ch == '(' || ch == ')' || ch == '[' || ch == ']' ||
+            ch == '\r' || ch == '\n') {
             continue;
         }
         if (k + 1 >= sizeof u) {

@@ -1209,10 +1209,20 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
          * "not in rad/s but probably in deg/s" with gyro=deg/s given, a
          * user went round in a circle: raw int16 counts, 16.4 a deg/s) */
         const char *u = hx_gyro_unit_name(csv->gyr_scale);
-        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as %s (%.4g %s), beyond the range of any "
-                     "MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (scale them by the "
-                     "sensor's sensitivity, LSB per deg/s, before reading them)",
-                     gyro_max_rps, u, gyro_max_rps / csv->gyr_scale, u, HX_GYRO_MAX_RPS);
+        const double in_unit = gyro_max_rps / csv->gyr_scale;
+        if (csv->gyr_scale == HX_DPS_RPS && in_unit > 32768.0 && gyro_max_rps * 1e-3 < HX_GYRO_MAX_RPS) {
+            /* beyond any 16-bit count, and within range a thousand times
+             * smaller: mdps read as deg/s (int16 counts stop at 32767) */
+            HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as deg/s (%.4g deg/s), beyond the "
+                         "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is in mdps? "
+                         "(read as deg/s by --units gyro=deg/s: give --units gyro=mdps)",
+                         gyro_max_rps, in_unit, HX_GYRO_MAX_RPS);
+        } else {
+            HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as %s (%.4g %s), beyond the range of "
+                         "any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (scale them by the "
+                         "sensor's sensitivity, LSB per deg/s, before reading them)",
+                         gyro_max_rps, u, in_unit, u, HX_GYRO_MAX_RPS);
+        }
     } else if (gyro_max_rps > HX_GYRO_MAX_RPS) {
         char fix[192] = "";
         if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
@@ -1971,7 +1981,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                 /* an interval over FNAV_STANCE_CYCLE_MAX_S spans a stand,
                  * which clears the detector's cycle (no run is scaled by
                  * it): no gait cycle, not counted (a 30 s stand in the
-                 * 820 Hz walk was "1 of the log's 51") */
+                 * 820 Hz walk was "1 of the log's 21") */
                 if (iv[i] <= (double)FNAV_STANCE_CYCLE_MAX_S) {
                     gait++;
                     over += iv[i] > cyc_max;
@@ -2612,8 +2622,8 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     if (t->rate_assumed_hz > 0.0 && s->strides < 3 && s->duration_s > 3.0 && s->stance_fraction < 0.9 &&
         !hx_nav_strides_too_short(s)) {
         /* a walk of six bare numbers a line at another rate, read at the
-         * OpenShoe set's 820 Hz: 100 Hz read so made 1 stride in 8 s where
-         * 47 were walked (too few cycles for the note below) */
+         * OpenShoe set's 820 Hz: a simulated 60 s walk at 100 Hz read so
+         * made 0 strides in 7.3 s (too few cycles for the note below) */
         fprintf(f, "note              the rate is assumed, %.0f Hz (the OpenShoe set's: the log has no time stamps), "
                    "and the foot moves in %.0f %% of the aligned frames with %ld stride%s in %.1f s: a log recorded "
                    "at another rate is read too fast or too slow by the ratio of the two, and its strides are lost; "

@@ -13,7 +13,9 @@ change and the alignment period.
   /usr/bin/python3 scripts/cut_still.py [HARNESS ...]   (default bin/harness)
 
 Two harness binaries (an old build and this one) print their columns side
-by side. About 1 minute per harness. Needs the shared data
+by side, then how many cut logs the last one changes, how many it makes
+worse, and the median 3-D closure of the changed ones before and after.
+About 12 s per harness. Needs the shared data
 ($FNAV_DATA_DIR, ../shared/data or /work/shared/data).
 """
 import json
@@ -21,6 +23,9 @@ import os
 import subprocess
 import sys
 import tempfile
+
+import re
+import statistics
 
 import numpy as np
 
@@ -61,6 +66,7 @@ def replay(h, path):
 def main():
     hs = sys.argv[1:] or [os.path.join(ROOT, "bin", "harness")]
     d = data_dir()
+    pairs = []
     with tempfile.TemporaryDirectory() as tmp:
         print("%-40s %5s  %s" % ("walk", "keep", "  |  ".join(hs)))
         for w in WALKS:
@@ -77,8 +83,17 @@ def main():
                     cut[:, 0] -= cut[0, 0]
                     p = os.path.join(tmp, "cut.csv")
                     np.savetxt(p, cut, delimiter=",", fmt="%.9g", header="t,ax,ay,az,gx,gy,gz", comments="")
-                print("%-40s %5s  %s" % (w[-40:], "orig" if keep is None else "%.2f" % keep,
-                                         "  |  ".join(replay(h, p) for h in hs)), flush=True)
+                res = [replay(h, p) for h in hs]
+                print("%-40s %5s  %s" % (w[-40:], "orig" if keep is None else "%.2f" % keep, "  |  ".join(res)),
+                      flush=True)
+                m = [re.match(r"\s*([0-9.]+) m", x) for x in res]
+                if keep is not None and len(hs) == 2 and all(m):
+                    pairs.append((float(m[0].group(1)), float(m[1].group(1))))
+    ch = [(a, b) for a, b in pairs if a != b]
+    if ch:
+        print("%d cut logs: %d changed, %d of them worse; median 3-D closure of the changed %.2f -> %.2f m" %
+              (len(pairs), len(ch), sum(b > a for a, b in ch), statistics.median(a for a, _ in ch),
+               statistics.median(b for _, b in ch)))
 
 
 if __name__ == "__main__":

@@ -2271,7 +2271,7 @@ static void test_units_row(void **state)
     char err[512];
     (void)state;
     tmp_path(p, sizeof p, ".csv");
-    write_text(p, "time,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\ns,g,g,g,deg/s,deg/s,deg/s\n"
+    write_text(p, "time,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\ns,g,g,g,deg/s,deg/s,[deg/s]\n"
                   "0,0,0,1,10,20,30\n0.01,0,0,1,10,20,30\n");
     r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
     if (r == NULL) {
@@ -2375,6 +2375,25 @@ static void test_numbered_columns(void **state)
     assert_int_equal(read_mapped(p, "ax=1,ay=2,az=3,gx=4,gy=5,gz=6", 0.0, &ra), 0);
     assert_int_equal(ra.n, 2);
     assert_true((float)ra.s[0].accel_mps2[2] == 9.8f);
+    /* ... also all numbers, when it names every column given, or counts
+     * the columns from 0 (pandas' header of an array): not a sample */
+    write_text(p, "0,1,2,3,4,5,6\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_mapped(p, "t=0,ax=1,ay=2,az=3,gx=4,gy=5,gz=6", 0.0, &ra), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 0 && (float)ra.s[0].accel_mps2[2] == 9.8f);
+    /* 1..7 over that header: a header still (it counts its columns), whose
+     * names lack 7: refused as before, not read with the header as a sample */
+    assert_int_equal(read_mapped(p, "t=1,ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), -1);
+    assert_true(strstr(ra.warn, "no header") == NULL && strstr(ra.err, ":1: ") != NULL);
+    /* the nanoseconds by number too */
+    write_text(p, "100,0,0,9.8,0,0,0,0\n100,0,0,9.8,0,0,0,10000000\n100,0,0,9.8,0,0,0,20000000\n");
+    assert_int_equal(read_mapped(p, "t=1,tns=8,ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), 0);
+    assert_int_equal(ra.n, 3);
+    assert_true(ra.s[0].t_ns == 100000000000LL && ra.s[2].t_ns - ra.s[0].t_ns == 20000000);
+    assert_int_equal(read_mapped(p, "t=1,tns=9,ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), -1);
+    if (strstr(ra.err, "--columns tns=9: the line has 8 fields") == NULL) {
+        fail_msg("tns past the fields: %s", ra.err);
+    }
     unlink(p);
 }
 
