@@ -630,7 +630,8 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     hx_progress_t pr;
     int64_t t_prev = 0, t_first = 0; /* the last and the first sample's stamps */
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
-    long irregular = 0;
+    long irregular = 0, gaps = 0;
+    double missing = 0.0, longest_gap_s = 0.0; /* samples the gaps lost (round(dt / T) - 1 each), the longest gap */
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     /* the first HX_STAMPS_PROBE_N stamps, for the test of stamps in bursts
      * as replay's (none: --rate, or out of memory); a streaming command,
@@ -683,6 +684,12 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * as well, or every interval of such a uniform log would be
              * counted (as psd's; the gcd so far is never below the final one) */
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
+            if ((double)(s.t_ns - t_prev) * 1e-9 * stamp_rate > 1.5) {
+                const double dt_s = (double)(s.t_ns - t_prev) * 1e-9;
+                gaps++;
+                missing += floor(dt_s * stamp_rate + 0.5) - 1.0;
+                longest_gap_s = dt_s > longest_gap_s ? dt_s : longest_gap_s;
+            }
         }
         if (R->n == 0) {
             t_first = s.t_ns;
@@ -728,10 +735,19 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         input_fail(R, "%s", hx_reader_error(r));
         rc = 1;
     }
-    if (irregular > 0) {
-        hx_warn(CMD, "%ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
+    if (irregular > 0 && gaps > 0) {
+        /* the gaps said with what they lost: the series is read as if its
+         * samples were consecutive (a 60 s hole in an hour was only "3
+         * intervals differ") */
+        hx_warn(CMD, "%s: %ld intervals differ from 1/rate by more than 10 %%, %ld of them gaps (longest %.3g s; "
+                     "about %.0f samples missing in all, %.2g %% of the log): the Allan variance assumes uniform "
+                     "sampling, and the samples are joined across the gaps as if consecutive",
+                path, irregular, gaps, longest_gap_s, missing,
+                100.0 * missing / ((double)R->n + missing > 0.0 ? (double)R->n + missing : 1.0));
+    } else if (irregular > 0) {
+        hx_warn(CMD, "%s: %ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
                      "sampling",
-                irregular);
+                path, irregular);
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
         /* not with --rate, which sets the rate the analysis takes; the

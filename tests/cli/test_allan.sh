@@ -780,6 +780,8 @@ if grep -q "intervals differ" "$T/err"; then fail "millisecond stamps of uniform
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
 expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
+expect_err "msgap.csv: 30 intervals differ from 1/rate by more than 10 %, 30 of them gaps (longest 0.00[0-9]* s; about 30 samples missing in all, 1 % of the log).*joined across the gaps" \
+    "the gaps named with the file, the longest and the samples they lost"
 # 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
 # lost: each 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, and the log must not be called uniform
 # (no warning); so a 30-minute ADIS16405 cut with four gaps does not say "1 intervals differ"
