@@ -601,8 +601,9 @@ static void disturbed_check(const run_t *R, const char *path)
         hx_warn(CMD,
                 "%s: %ld of %ld one-second windows are disturbed (a touch or a knock?): the rate or |f| spreads by "
                 "more than %g times the median window's (%.3g rad/s, %.3g m/s^2 RMS; the first at %.0f s); the "
-                "Allan variance includes it and may fit it as a bias; cut the log to its still part (harness "
-                "convert LOG OUT --start S --end S)",
+                "Allan variance includes it: the white noise N and a profile written from it are inflated by "
+                "it, and a fit may take it for a bias; cut the log to its still part (harness convert LOG OUT "
+                "--start S --end S)",
                 path, count, n, HX_ALLAN_DISTURBED_RATIO, med[0], med[1], first_s);
     }
 }

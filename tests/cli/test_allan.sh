@@ -922,6 +922,8 @@ done
 expect_exit 0 "a static log touched for 0.5 s" "$H" allan "$T/touch1.csv" --no-sim --quiet
 expect_err "touch1.csv: 1 of 600 one-second windows are disturbed" "the touch is warned about"
 expect_err "the first at 300 s" "the touched second is named"
+expect_err "the Allan variance includes it: the white noise N and a profile written from it are inflated by it" \
+    "the touch: N and the profile said to be inflated"
 expect_exit 0 "the same log untouched" "$H" allan "$T/touch0.csv" --no-sim --quiet
 if grep -q "disturbed" "$T/err"; then fail "an untouched white-noise log called disturbed: $(cat "$T/err")"; else
     pass "an untouched log is not called disturbed"; fi
