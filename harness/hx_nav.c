@@ -741,6 +741,11 @@ typedef struct {
     double gyro_max_rps; /* largest |w| on one axis: the units check (a range is per axis) */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_walk_t walk;      /* |f| in one-second windows: the units check's gyro mark */
+    int64_t q_t0_ns;     /* the open one-second window of the swapped-columns check (q_n > 0) */
+    double q_w, q_w2, q_f; /* its sums of |w|, |w|^2 and |f| */
+    long q_n;
+    double quiet_w, quiet_f; /* the steadiest-|w| window's mean |w| and |f| (quiet_w < 0: none) */
+    double quiet_cv;     /* its sd / mean of |w| */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
     int64_t t_first_ns;  /* the first sample's stamp (with have_t_last) */
@@ -762,6 +767,43 @@ typedef struct {
     int ev_fo;             /* the swing's foot-off, waiting for its stride */
     int64_t ev_fo_t_ns;
 } hx_port_ctx_t;
+
+/* The swapped-columns check (units_check): one-second windows of the
+ * stamps, the one whose |w| is steadiest (smallest sd / mean, 10 samples or
+ * more) kept with its mean |w| and |f|. A gyro at rest reads about 0; the
+ * steadiest second of columns that hold an accelerometer reads gravity
+ * (1 in g, 9.8 in m/s^2) with a spread of a few percent. */
+static void quiet_close(hx_port_ctx_t *c)
+{
+    if (c->q_n >= 10) {
+        const double m = c->q_w / (double)c->q_n, var = c->q_w2 / (double)c->q_n - m * m;
+        const double cv = m > 0.0 ? sqrt(var > 0.0 ? var : 0.0) / m : 1e300;
+        if (c->quiet_w < 0.0 || cv < c->quiet_cv) {
+            c->quiet_cv = cv;
+            c->quiet_w = m;
+            c->quiet_f = c->q_f / (double)c->q_n;
+        }
+    }
+    c->q_n = 0;
+}
+
+static void quiet_push(hx_port_ctx_t *c, const fnav_sample_t *s, double f_norm)
+{
+    const double w = sqrt((double)s->gyro_rps[0] * (double)s->gyro_rps[0] +
+                          (double)s->gyro_rps[1] * (double)s->gyro_rps[1] +
+                          (double)s->gyro_rps[2] * (double)s->gyro_rps[2]);
+    if (c->q_n > 0 && (s->t_ns < c->q_t0_ns || s->t_ns - c->q_t0_ns >= 1000000000)) {
+        quiet_close(c);
+    }
+    if (c->q_n == 0) {
+        c->q_t0_ns = s->t_ns;
+        c->q_w = c->q_w2 = c->q_f = 0.0;
+    }
+    c->q_w += w;
+    c->q_w2 += w * w;
+    c->q_f += f_norm;
+    c->q_n++;
+}
 
 /* Give ev the last sample read once the navigator has accepted it. */
 static void ev_sync(hx_port_ctx_t *c)
@@ -854,6 +896,7 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
                                    (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
             c->f_norm_sum += fn;
             hx_walk_push(&c->walk, s->t_ns, fn);
+            quiet_push(c, s, fn);
         }
         c->n_read++;
         if (c->probe != NULL && c->n_probe < HX_STAMPS_PROBE_N) {
@@ -934,6 +977,13 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves. */
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
+/* The swapped-columns check: the gyro's steadiest second (sd / mean of |w|
+ * under HX_SWAP_STEADY_CV) reads gravity within HX_SWAP_G_TOL (in g or in
+ * m/s^2) while the accelerometer there reads under HX_SWAP_F_MAX_G g: a
+ * gyro at rest reads about 0 and never so steady a magnitude */
+#define HX_SWAP_STEADY_CV 0.05
+#define HX_SWAP_G_TOL 0.2
+#define HX_SWAP_F_MAX_G 0.2
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 /* A log shorter than this in the finer unit cannot hold a stride (a gait
  * cycle lasts about a second) after the alignment's still period: the
@@ -1362,7 +1412,8 @@ static const char *coarse_stamps_remedy(hx_format_t fmt)
 
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
-static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
+static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double quiet_w, double quiet_f, double quiet_cv,
+                       double f_norm_mean, int walks,
                        double in_rate_hz, size_t n_in, int64_t t_first_ns, int64_t t_last_ns,
                        const hx_csv_layout_t *csv, hx_format_t fmt, char *err, size_t err_size)
 {
@@ -1458,6 +1509,45 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
             snprintf(msg + len, sizeof msg - len, "%s%s", bad ? "; also " : "", rep);
         }
         bad = 1;
+    }
+    if (quiet_w > 0.0 && quiet_cv < HX_SWAP_STEADY_CV && quiet_f < HX_SWAP_F_MAX_G * g &&
+        (fabs(quiet_w - 1.0) < HX_SWAP_G_TOL || fabs(quiet_w / g - 1.0) < HX_SWAP_G_TOL)) {
+        /* the gyro's steadiest second reads gravity, and the accelerometer
+         * there about nothing: the columns are swapped (six bare numbers a
+         * line with the gyro first, read as the OpenShoe set's; a header
+         * matched wrongly). Said first, the unit findings after it */
+        char swp[400];
+        snprintf(swp, sizeof swp,
+                 "the gyroscope reads a steady |w| = %.3g in the log's steadiest second (spread %.1f %%), as an "
+                 "accelerometer at rest reads gravity%s, and the accelerometer %.3g there: the accelerometer and "
+                 "gyroscope columns swapped? (read each from the other's: --columns, or for six bare numbers a line "
+                 "with the gyro first --from csv --columns gx=1,gy=2,gz=3,ax=4,ay=5,az=6 --input-rate HZ)",
+                 quiet_w, 100.0 * quiet_cv, fabs(quiet_w - 1.0) < HX_SWAP_G_TOL ? " in g" : "", quiet_f);
+        {
+            /* swp, then the unit findings, each after "; also " (pieces
+             * appended within err_size: one format of all would be cut) */
+            const char *piece[3];
+            size_t len, np = 0, i;
+            piece[np++] = swp;
+            if (acc[0] != '\0') {
+                piece[np++] = acc;
+            }
+            if (bad) {
+                piece[np++] = msg;
+            }
+            err[0] = '\0';
+            for (i = 0; i < np; i++) {
+                len = strlen(err);
+                if (len + 1 < err_size) {
+                    snprintf(err + len, err_size - len, "%s%s", i > 0 ? "; also " : "", piece[i]);
+                }
+            }
+            len = strlen(err);
+            if (np == 1 && len + 1 < err_size) {
+                snprintf(err + len, err_size - len, " (docs/log-format.md)");
+            }
+        }
+        return 2;
     }
     if (acc[0] != '\0') {
         snprintf(err, err_size, "%s%s%s", acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
@@ -1725,6 +1815,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     int64_t span_t0 = 0, span_t1 = 0; /* with --rate the input's, not the resampled grid's) */
     int rc = 0;
     memset(&pc, 0, sizeof pc);
+    pc.quiet_w = -1.0; /* no window yet (quiet_close) */
     memset(&raw, 0, sizeof raw);
     memset(&res, 0, sizeof res);
     err[0] = '\0';
@@ -2038,7 +2129,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             span_t0 = pc.t_first_ns;
             span_t1 = pc.t_last_ns;
         }
-        u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
+        quiet_close(&pc); /* the last window */
+        u = units_check(&nav, pc.gyro_max_rps, pc.quiet_w, pc.quiet_f, pc.quiet_cv,
+                        pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
                         span_n, span_t0, span_t1,

@@ -1571,6 +1571,17 @@ expect_exit 0 "the same walk with --input-rate 100" "$H" replay "$T/bare6_100.tx
 grep -q "the rate is assumed" "$T/out" && fail "the rate given: still called assumed" || pass "the rate given: no assumed-rate note"
 json "$T/bare6_100r.json" 'j["rate_assumed_hz"] is None and j["strides"] >= 40' && pass "replay --json at the rate given: rate_assumed_hz null, the strides" ||
     fail "replay --json at the rate given: $(grep -E 'rate_assumed|"strides"' "$T/bare6_100r.json")"
+# six bare numbers a line with the gyro first (read as the OpenShoe set: acc first): the gyro's steadiest second reads
+# gravity, the accelerometer about nothing there; named as swapped columns, with the remedy, which then replays
+awk -F, 'NR > 1 { print $5 "," $6 "," $7 "," $2 "," $3 "," $4 }' "$T/bare_w100.csv" > "$T/bare6_gyrofirst.txt"
+expect_exit 1 "six bare columns, the gyro first" "$H" replay "$T/bare6_gyrofirst.txt" --quiet
+expect_err "the gyroscope reads a steady |w| = 9\.[0-9]* in the log's steadiest second (spread .*), as an accelerometer at rest reads gravity, and the accelerometer .* there: the accelerometer and gyroscope columns swapped?" \
+    "the gyro first: swapped columns named"
+expect_exit 0 "the gyro first, read by the remedy" "$H" replay "$T/bare6_gyrofirst.txt" --quiet --from csv \
+    --columns gx=1,gy=2,gz=3,ax=4,ay=5,az=6 --input-rate 100
+grep -q "swapped" "$T/err" && fail "the remedy followed: still called swapped" || pass "the remedy followed: no swap named"
+expect_exit 0 "the same walk in order" "$H" replay "$T/bare6_100.txt" --quiet --input-rate 100
+grep -q "swapped" "$T/err" && fail "columns in order called swapped" || pass "columns in order: no swap named"
 # a slow gait (under 70 steps/min) is named, with what guards against it: in a slow swing the foot's deceleration
 # before the landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up
 # to a third of their length, scripts/probe_slow.py). The simulator's 60 steps/min
