@@ -769,6 +769,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     if (R->rate_hz <= 0.0 && rc == 0 && R->n < 2u) {
         return 0; /* one sample has no interval: the caller names the samples needed, not --rate */
     }
+    if (R->rate_hz <= 0.0 && rc != 0 && R->n == 0u) {
+        return -1; /* the reader's error ("no samples") said it */
+    }
     if (R->rate_hz <= 0.0) {
         hx_error(CMD, "%s: %s", path,
                  rc != 0 ? "too few samples before the error to know the sample rate"

@@ -326,9 +326,19 @@ void hx_line_break(void)
     }
 }
 
+/* The process's first error message (hx_json_failure) and whether a JSON
+ * was written (hx_write_json). */
+static char g_first_error[1024];
+static int g_json_written;
+
 void hx_error(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
+    if (g_first_error[0] == '\0') {
+        va_start(ap, fmt);
+        (void)vsnprintf(g_first_error, sizeof g_first_error, fmt, ap);
+        va_end(ap);
+    }
     hx_line_break();
     fprintf(stderr, "harness %s: error: ", cmd);
     va_start(ap, fmt);
@@ -808,6 +818,57 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
     return 0;
 }
 
+int hx_json_failure(const char *cmd, int argc, char **argv)
+{
+    const char *json = NULL, *v;
+    char line[2048], prefix[64], err[1024];
+    cJSON *root;
+    struct stat sj, sa;
+    int i, rc, json_i = -1;
+    for (i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--") == 0) {
+            break;
+        }
+        if (opt_value(argv, argc, &i, "--json", &v)) {
+            json = v;
+            json_i = i;
+        }
+    }
+    if (json == NULL || json[0] == '\0' || g_json_written) {
+        return 0;
+    }
+    if (strcmp(json, "-") == 0) {
+        if (hx_json_stdout == NULL) {
+            return 0; /* standard output never claimed (a usage error came first) */
+        }
+    } else if (stat(json, &sj) == 0) {
+        /* never over a file the command line names otherwise (the input
+         * given as --json too, when the input error came before that check) */
+        for (i = 0; i < argc; i++) {
+            if (i != json_i && stat(argv[i], &sa) == 0 && sa.st_dev == sj.st_dev && sa.st_ino == sj.st_ino) {
+                return 0;
+            }
+        }
+    }
+    root = cJSON_CreateObject();
+    if (root == NULL) {
+        return -1;
+    }
+    (void)snprintf(prefix, sizeof prefix, "harness %s", cmd);
+    hx_command_line(line, sizeof line, prefix, argc, argv);
+    cJSON_AddStringToObject(root, "command", line);
+    /* the key every command's JSON has for a run stopped by its input */
+    cJSON_AddBoolToObject(root, "complete", 0);
+    cJSON_AddStringToObject(root, "error", g_first_error[0] != '\0' ? g_first_error : "failed (see standard error)");
+    rc = hx_write_json(json, root, err, sizeof err);
+    cJSON_Delete(root);
+    if (rc != 0) {
+        hx_line_break();
+        fprintf(stderr, "harness %s: error: %s\n", cmd, err);
+    }
+    return rc;
+}
+
 /* The length of the well-formed UTF-8 sequence at s (Unicode 3-7: no
  * overlong form, no surrogate, nothing above U+10FFFF), 0 when it is none. */
 static size_t utf8_len(const unsigned char *s)
@@ -961,6 +1022,7 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
         ok = 0;
     }
     free(txt);
+    g_json_written = 1; /* written or attempted: hx_json_failure adds nothing */
     if (!ok) {
         if (e != 0) {
             snprintf(err, err_size, "cannot write %s (%s)", path, strerror(e));

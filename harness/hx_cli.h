@@ -300,6 +300,12 @@ const char *hx_line_str(char *buf, size_t size, const char *s);
 
 /** Format a double for JSON/text (finite or "null"). */
 const char *hx_fmt_g(char *buf, size_t size, double v);
+/** After a command that failed on its input (exit HX_EXIT_DATA) before it
+ *  wrote its JSON: `--json FILE` gets {command, complete: false, error: the
+ *  first error printed}, so that a pipeline reading FILE finds why rather
+ *  than no file or the previous run's. 0 when nothing was due or it was
+ *  written, -1 (error printed) when it could not be. */
+int hx_json_failure(const char *cmd, int argc, char **argv);
 /** The command line as run, for a JSON's `command` or a results page:
  *  prefix ("harness replay"), then each of argv[0..argc) after a space,
  *  single-quoted as a POSIX shell reads it back when it holds anything but

@@ -128,5 +128,11 @@ int main(int argc, char **argv)
     if (hx_json_stdout_claim(c->name, argc - 2, argv + 2) != 0) {
         return HX_EXIT_USAGE;
     }
-    return flush_stdout(c->name, c->fn(argc - 2, argv + 2));
+    {
+        int rc = c->fn(argc - 2, argv + 2);
+        if (rc == HX_EXIT_DATA) {
+            (void)hx_json_failure(c->name, argc - 2, argv + 2);
+        }
+        return flush_stdout(c->name, rc);
+    }
 }

@@ -1095,7 +1095,9 @@ if "$PY" -c "import json,sys; p=json.load(open(sys.argv[1]))['channels'][0]['pap
 expect_exit 1 "allan with a limit below one sample" "$H" allan --series "$T/w17920.txt" --rate 100 --max-tau-frac 0.00005 --no-sim --json "$T/wtiny.json"
 expect_err "17920 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 20000 samples" \
     "a limit below one sample is said"
-[ ! -e "$T/wtiny.json" ] && pass "no paper identification below one sample" || fail "a JSON without a tau range"
+# no identification written, only the failure (harness main: hx_json_failure)
+json "$T/wtiny.json" 'j["complete"] is False and "channels" not in j and "too few for any Allan point" in j["error"]' \
+    && pass "no paper identification below one sample (the failure JSON)" || fail "a JSON without a tau range: $(head -c 300 "$T/wtiny.json")"
 
 # a slope of -1 after frequency noise is no phase noise: phase noise falls
 # fastest with tau, so it cannot take over at a longer tau; white noise and a

@@ -562,5 +562,33 @@ else
     echo "skip the full-disk checks of psd and allan (no /dev/full)"
 fi
 
+# --- a command stopped by its input before its JSON was written (allan, psd,
+# simgap on a log without samples wrote none: a pipeline read no file, or the
+# previous run's) writes {command, complete: false, error}; exit 1 stays.
+printf 't,ax,ay,az,gx,gy,gz\n' > "$T/nosamples.csv"
+for c in allan psd simgap; do
+    echo '{"stale": true}' > "$T/fail_$c.json"
+    expect_exit 1 "$c: a log without samples" "$H" $c "$T/nosamples.csv" --json "$T/fail_$c.json"
+    expect_err "nosamples.csv: no samples" "$c: no samples said"
+    json "$T/fail_$c.json" 'j["complete"] is False and j["error"].endswith("nosamples.csv: no samples") and j["command"].startswith("harness '$c' ") and "stale" not in j' \
+        && pass "$c: the failure JSON replaces the previous run's" || fail "$c: no failure JSON: $(head -c 300 "$T/fail_$c.json")"
+done
+# the reader's error said once (allan added "too few samples before the error to know the sample rate")
+n=$(grep -c 'error:' "$T/err")
+[ "$n" -eq 1 ] && pass "simgap: one error for a log without samples" || fail "simgap: $n errors: $(cat "$T/err")"
+expect_exit 1 "allan: a log without samples" "$H" allan "$T/nosamples.csv"
+n=$(grep -c 'error:' "$T/err")
+[ "$n" -eq 1 ] && pass "allan: one error for a log without samples" || fail "allan: $n errors: $(cat "$T/err")"
+# '--json -' gets it on standard output; the input named as --json is never overwritten
+expect_exit 1 "psd: a log without samples, --json -" "$H" psd "$T/nosamples.csv" --json -
+json "$T/out" 'j["complete"] is False' && pass "psd --json -: the failure JSON on standard output" || fail "psd --json -: $(head -c 300 "$T/out")"
+cp "$T/nosamples.csv" "$T/self.csv"
+expect_exit 2 "allan: the input as --json" "$H" allan "$T/self.csv" --json "$T/self.csv"
+cmp -s "$T/nosamples.csv" "$T/self.csv" && pass "allan: the input given as --json left as it was" || fail "allan: the input overwritten"
+# a usage error writes nothing
+rm -f "$T/usage.json"
+expect_exit 2 "psd: a usage error" "$H" psd "$T/nosamples.csv" --nfft 7 --json "$T/usage.json"
+[ ! -e "$T/usage.json" ] && pass "psd: no JSON on a usage error" || fail "psd: a JSON written on a usage error"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
