@@ -123,7 +123,7 @@ void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt);
     { "--from", "NAME", "input format (default: detected): " HX_FORMAT_LIST, 0 },            \
     { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 },                \
     { "--columns", "MAP", "the CSV's names of the columns, e.g. t=timestamp_ns,ax=acc_x,...", 0 }, \
-    { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps", 0 }
+    { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps; raw counts: a count's size first (accel=0.061mg)", 0 }
 
 /** The format of an output log from --to (bin or csv; another is a usage
  *  error, printed: -1) or, without it, HX_FMT_CSV for out "-" (standard

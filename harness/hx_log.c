@@ -3763,15 +3763,23 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
 
 const char *hx_accel_unit_name(double acc_scale)
 {
-    return acc_scale == HX_G_MPS2    ? "g"
-           : acc_scale == HX_MG_MPS2 ? "mg"
-           : acc_scale == HX_UG_MPS2 ? "ug"
-                                     : "m/s2";
+    static char buf[40];
+    if (acc_scale == HX_G_MPS2 || acc_scale == HX_MG_MPS2 || acc_scale == HX_UG_MPS2 || acc_scale == 1.0) {
+        return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : acc_scale == HX_UG_MPS2 ? "ug" : "m/s2";
+    }
+    /* a count's size (--units accel=0.061mg), as --units reads it back */
+    snprintf(buf, sizeof buf, "%.9gmg", acc_scale / HX_MG_MPS2);
+    return buf;
 }
 
 const char *hx_gyro_unit_name(double gyr_scale)
 {
-    return gyr_scale == HX_DPS_RPS ? "deg/s" : gyr_scale == HX_MDPS_RPS ? "mdps" : "rad/s";
+    static char buf[40];
+    if (gyr_scale == HX_DPS_RPS || gyr_scale == HX_MDPS_RPS || gyr_scale == 1.0) {
+        return gyr_scale == HX_DPS_RPS ? "deg/s" : gyr_scale == HX_MDPS_RPS ? "mdps" : "rad/s";
+    }
+    snprintf(buf, sizeof buf, "%.9gmdps", gyr_scale / HX_MDPS_RPS); /* --units gyro=8.75mdps */
+    return buf;
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
@@ -4690,15 +4698,31 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
 int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size)
 {
     const char *p = spec;
-    char key[16], given[16], val[48];
+    char key[16], given[32], val[64];
     int seen = 0, rc;
     while ((rc = next_item(&p, "--units", key, sizeof key, given, sizeof given, err, err_size)) > 0) {
         int k = strcmp(key, "time") == 0 ? 0 : strcmp(key, "accel") == 0 ? 1 : strcmp(key, "gyro") == 0 ? 2 : -1;
+        double count = 1.0; /* a count's size: accel=0.061mg, gyro=8.75mdps (raw integer counts) */
         /* the units' signs as the names read them: time=µs, accel=m/s²,
          * gyro=°/s are known units, not unknown ones; the errors quote
          * the value as given */
         if (hx_name_fold_units(given, val, sizeof val) != 0) {
             snprintf(val, sizeof val, "?");
+        }
+        if (k > 0 && ((val[0] >= '0' && val[0] <= '9') || val[0] == '.')) {
+            /* raw counts, scaled by the datasheet's sensitivity: the
+             * number, then the unit it is in */
+            char *end;
+            errno = 0;
+            count = strtod(val, &end);
+            if (end == val || errno != 0 || !(count > 0.0) || !(count < 1e6) || *end == '\0') {
+                snprintf(err, err_size,
+                         "--units: %s=%s: a count's size is a positive number then its unit (accel=0.061mg, "
+                         "gyro=8.75mdps: the datasheet's sensitivity, per LSB)",
+                         key, given);
+                return -1;
+            }
+            memmove(val, end, strlen(end) + 1);
         }
         if (k < 0) {
             snprintf(err, err_size, "--units: unknown quantity '%s' (time, accel or gyro)", key);
@@ -4732,10 +4756,11 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else {
                 snprintf(err, err_size,
                          "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g, mg or ug "
-                         "(\xc2\xb5g)",
+                         "(\xc2\xb5g), after a count's size for raw counts (0.061mg)",
                          given);
                 return -1;
             }
+            l->acc_scale *= count;
         } else {
             if (strcmp(val, "rad/s") == 0) {
                 l->gyr_scale = 1.0;
@@ -4745,9 +4770,12 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
                 l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] */
             } else {
                 snprintf(err, err_size,
-                         "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)", given);
+                         "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s), after a "
+                         "count's size for raw counts (8.75mdps)",
+                         given);
                 return -1;
             }
+            l->gyr_scale *= count;
         }
     }
     if (rc < 0) {

@@ -1269,8 +1269,8 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                          gyro_max_rps, in_unit, HX_GYRO_MAX_RPS);
         } else {
             HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as %s (%.4g %s), beyond the range of "
-                         "any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (scale them by the "
-                         "sensor's sensitivity, LSB per deg/s, before reading them)",
+                         "any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (give a count's size, "
+                         "the datasheet's sensitivity: --units gyro=70mdps for 70 mdps per LSB)",
                          gyro_max_rps, u, in_unit, u, HX_GYRO_MAX_RPS);
         }
     } else if (gyro_max_rps > HX_GYRO_MAX_RPS) {
@@ -1498,7 +1498,8 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double quiet_
                  msq  ? "in m/s^2 already? ("
                  : mg ? "not in m/s^2: in mg? ("
                  : ug ? "not in m/s^2: in ug? ("
-                      : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
+                      : "not in m/s^2: raw counts? (give a count's size, the datasheet's sensitivity: --units "
+                        "accel=0.061mg for 0.061 mg per LSB)",
                  fix, msq || mg || ug ? ")" : "");
     }
     bad = units_problem(fn, g, gyro_max_rps, rate, n_in > 1 ? 1e-9 * (double)(t_last_ns - t_first_ns) : 0.0, csv,

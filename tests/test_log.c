@@ -3689,6 +3689,30 @@ static void test_units_option_utf8(void **state)
         assert_int_equal(hx_csv_units_parse(&l, "gyro=\xc2\xb0/h", err, sizeof err), -1);
         assert_non_null(strstr(err, "gyro=\xc2\xb0/h: the rate unit is"));
     }
+    {
+        /* a count's size before the unit: raw counts at the datasheet's
+         * sensitivity (0.061 mg and 8.75 mdps per LSB, an LSM6DS at 2 g
+         * and 250 deg/s); the scale is the number times the unit's */
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "accel=0.061mg,gyro=8.75m\xc2\xb0/s", err, sizeof err), 0);
+        assert_true(l.acc_scale == 0.061 * HX_MG_MPS2);
+        assert_true(l.gyr_scale == 8.75 * HX_MDPS_RPS);
+        assert_string_equal(hx_accel_unit_name(l.acc_scale), "0.061mg");
+        assert_string_equal(hx_gyro_unit_name(l.gyr_scale), "8.75mdps");
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=1e-3rad/s", err, sizeof err), 0);
+        assert_true(l.gyr_scale == 1e-3);
+    }
+    {
+        static const char *const bad[] = { "accel=0.061", "gyro=-1dps", "accel=0g", "gyro=1e7dps", "accel=.mg",
+                                           "time=10us", "accel=2xg" };
+        for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+            hx_csv_layout_t l;
+            hx_csv_layout_default(&l);
+            assert_int_equal(hx_csv_units_parse(&l, bad[i], err, sizeof err), -1);
+        }
+    }
 }
 
 /* --columns names a column whose name states a unit other than the one

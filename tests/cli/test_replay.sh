@@ -1476,9 +1476,33 @@ PYEOF
 awk -F, 'NR == 1 { print; next } { printf "%s,%d,%d,%d,%d,%d,%d\n", $1, $2 * 2048 / 9.80665, $3 * 2048 / 9.80665, $4 * 2048 / 9.80665, $5 * 57.29577951308232 * 16.4, $6 * 57.29577951308232 * 16.4, $7 * 57.29577951308232 * 16.4 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_counts.csv"
 expect_exit 1 "raw counts read with gyro=deg/s" "$H" replay "$T/in_counts.csv" --quiet --units accel=mg,gyro=deg/s
-expect_err "the gyroscope reaches .* rad/s on one axis read as deg/s (.* deg/s), beyond the range of any MEMS gyro .*: raw counts? (scale them by the sensor's sensitivity" \
+expect_err "the gyroscope reaches .* rad/s on one axis read as deg/s (.* deg/s), beyond the range of any MEMS gyro .*: raw counts? (give a count's size" \
     "raw counts read as deg/s: named as raw counts"
 grep -q "probably in deg/s" "$T/err" && fail "raw counts read as deg/s: told deg/s again" || pass "raw counts read as deg/s: not told deg/s again"
+expect_err "raw counts? (give a count's size, the datasheet's sensitivity: --units gyro=70mdps for 70 mdps per LSB)" \
+    "raw counts: the remedy names a count's size in --units"
+# --units with a count's size reads the counts: the same trajectory, byte for byte, as the counts scaled to SI
+# beforehand in double (g = 9.80665 m/s^2; 1/2048 g = 0.48828125 mg; 1/16.4 deg/s = 0.06097560975609756 deg/s)
+expect_exit 0 "raw counts read with their size" "$H" replay "$T/in_counts.csv" --quiet \
+    --units accel=0.48828125mg,gyro=0.06097560975609756dps --out "$T/counts_sized.csv"
+"${PY:-/usr/bin/python3}" - "$T/in_counts.csv" "$T/counts_si.csv" <<'PYEOF'
+import math, sys
+rows = [l.rstrip("\n").split(",") for l in open(sys.argv[1])]
+sa = 0.48828125 * 1e-3 * 9.80665
+sg = 0.06097560975609756 * math.pi / 180.0
+with open(sys.argv[2], "w") as f:
+    f.write(",".join(rows[0]) + "\n")
+    for r in rows[1:]:
+        f.write(",".join([r[0]] + [repr(float(x) * sa) for x in r[1:4]] + [repr(float(x) * sg) for x in r[4:7]]) + "\n")
+PYEOF
+expect_exit 0 "the counts scaled to SI beforehand" "$H" replay "$T/counts_si.csv" --quiet --out "$T/counts_si_tr.csv"
+cmp -s "$T/counts_sized.csv" "$T/counts_si_tr.csv" && pass "a count's size: the trajectory of the counts scaled beforehand" \
+    || fail "a count's size: the trajectories differ"
+expect_exit 2 "a count's size without its unit" "$H" replay "$T/in_counts.csv" --quiet --units accel=0.48828125
+expect_err "accel=0.48828125: a count's size is a positive number then its unit (accel=0.061mg, gyro=8.75mdps" \
+    "a count's size without its unit: refused, the form named"
+expect_exit 2 "a count's size of 0" "$H" replay "$T/in_counts.csv" --quiet --units gyro=0dps
+expect_err "gyro=0dps: a count's size is a positive number" "a count's size of 0: refused"
 # mdps read as deg/s: past any 16-bit count, within range a thousand times smaller: mdps named, not raw counts
 awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.0f,%.0f,%.0f\n", $1, $2, $3, $4, $5 * 57295.77951308232, $6 * 57295.77951308232, $7 * 57295.77951308232 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_mdps.csv"
