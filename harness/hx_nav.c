@@ -1417,7 +1417,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double quiet_
                        double in_rate_hz, size_t n_in, int64_t t_first_ns, int64_t t_last_ns,
                        const hx_csv_layout_t *csv, hx_format_t fmt, char *err, size_t err_size)
 {
-    char msg[768], acc[360] = "", rep[448] = ""; /* acc + "; also " + msg fit the summary's units_problem */
+    char msg[768], acc[420] = "", rep[448] = ""; /* acc + "; also " + msg fit the summary's units_problem */
     const double g = (double)nav->cfg.gravity_mps2;
     double rate;
     /* |f| at rest: the alignment's, or that of a still period it refused
@@ -1551,7 +1551,13 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double quiet_
         return 2;
     }
     if (acc[0] != '\0') {
-        snprintf(err, err_size, "%s%s%s", acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
+        /* in pieces, within err_size (one format of all would be cut) */
+        size_t len;
+        snprintf(err, err_size, "%s%s", acc, bad ? "; also " : " (docs/log-format.md)");
+        len = strlen(err);
+        if (bad && len < err_size) {
+            snprintf(err + len, err_size - len, "%s", msg);
+        }
         return 2;
     }
     if (bad) {
