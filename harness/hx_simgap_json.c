@@ -426,6 +426,11 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 } else {
                     hx_json_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
                 }
+                /* false: the whole log shows it, the fit segment none
+                 * of it (its parameter 0 reproduces nothing) */
+                cJSON_AddBoolToObject(e, "rate_from_fit", (k == SG_TIM_JITTER  ? r->tim.stamp_s
+                                                           : k == SG_TIM_DUP ? r->tim.dup_prob
+                                                                             : r->tim.drop_prob) > 0.0);
                 hx_json_num(e, "z_whole_log", r->tim.z[SG_FULL][k]);
                 hx_json_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
                 hx_json_num(e, "z_held_out_after", r->tim.z_after[k]);

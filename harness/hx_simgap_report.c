@@ -551,16 +551,32 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
             sg_nav_verdict_text((const sg_nav_t *)r->nav, f, &first);
         }
         if (r->tim.significant) {
+            /* an effect the whole log shows but the fit segment holds
+             * none of (every drop held out) has no rate to give: "prob 0"
+             * named an effect whose twin reproduces nothing */
+            static const char *const k_none = "held-out segment only: no rate from the fit segment";
             if (r->tim.sel[SG_TIM_DUP]) {
-                fprintf(f, "%s duplicate (prob %.3g)", first ? ":" : ";", r->tim.dup_prob);
+                if (r->tim.dup_prob > 0.0) {
+                    fprintf(f, "%s duplicate (prob %.3g)", first ? ":" : ";", r->tim.dup_prob);
+                } else {
+                    fprintf(f, "%s duplicate (%s)", first ? ":" : ";", k_none);
+                }
                 first = 0;
             }
             if (r->tim.sel[SG_TIM_DROP]) {
-                fprintf(f, "%s dropout (prob %.3g)", first ? ":" : ";", r->tim.drop_prob);
+                if (r->tim.drop_prob > 0.0) {
+                    fprintf(f, "%s dropout (prob %.3g)", first ? ":" : ";", r->tim.drop_prob);
+                } else {
+                    fprintf(f, "%s dropout (%s)", first ? ":" : ";", k_none);
+                }
                 first = 0;
             }
             if (r->tim.sel[SG_TIM_JITTER]) {
-                fprintf(f, "%s jitter (stamp_s %.3g s)", first ? ":" : ";", r->tim.stamp_s);
+                if (r->tim.stamp_s > 0.0) {
+                    fprintf(f, "%s jitter (stamp_s %.3g s)", first ? ":" : ";", r->tim.stamp_s);
+                } else {
+                    fprintf(f, "%s jitter (%s)", first ? ":" : ";", k_none);
+                }
                 first = 0;
             }
         }

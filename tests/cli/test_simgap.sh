@@ -833,5 +833,17 @@ else
 fi
 rm -f "$T/big.csv"
 
+# drops only in the held-out part (every 40th sample of the last fifth): the whole log shows them, the fit segment
+# has none, so no rate: named as such, not "dropout (prob 0)", whose twin reproduces nothing (the consistency
+# audit: four IPOL trials); the JSON's rate_from_fit false
+expect_exit 0 "a walk for late drops" "$H" sim --duration 40 --out "$T/late.csv" --seed 3
+n=$(wc -l < "$T/late.csv")
+awk -v n="$n" 'NR == 1 || NR < 0.8 * n || NR % 40 != 0' "$T/late.csv" > "$T/late_drop.csv"
+expect_exit 0 "drops in the held-out part only" "$H" simgap "$T/late_drop.csv" --seeds 4 --json "$T/late_drop.json"
+expect_out "^verdict: .*dropout (held-out segment only: no rate from the fit segment)" "late drops: no rate from the fit said"
+grep -q "dropout (prob 0)" "$T/out" && fail "late drops: dropout (prob 0) named" || pass "late drops: no dropout (prob 0)"
+json "$T/late_drop.json" '[e["rate_from_fit"] for e in j["timing"]["selected"] if e["effect"] == "dropout"] == [False]' \
+    && pass "late drops: rate_from_fit false" || fail "late drops: rate_from_fit"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap.sh: all passed"
