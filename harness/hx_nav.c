@@ -739,6 +739,8 @@ typedef struct {
     int sink_failed;     /* the CSV sink refused a frame */
     int traj_oom;        /* no memory to keep a frame */
     double gyro_max_rps; /* largest |w| on one axis: the units check (a range is per axis) */
+    double gyro_max_in_rps; /* the same over the samples within the navigator's range */
+    long n_gyro_over;    /* samples past it (FNAV_NAV_GYRO_MAX_RPS on an axis): glitches when few */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_walk_t walk;      /* |f| in one-second windows: the units check's gyro mark */
     int64_t q_t0_ns;     /* the open one-second window of the swapped-columns check (q_n > 0) */
@@ -886,9 +888,16 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
          * a gyro's range is per axis, not the vector's magnitude (454.7
          * against info's 438.8 for one log in deg/s) */
         int k;
+        double wmax = 0.0;
         for (k = 0; k < 3; k++) {
             const double w = fabs((double)s->gyro_rps[k]);
-            c->gyro_max_rps = w > c->gyro_max_rps ? w : c->gyro_max_rps;
+            wmax = w > wmax ? w : wmax;
+        }
+        c->gyro_max_rps = wmax > c->gyro_max_rps ? wmax : c->gyro_max_rps;
+        if (wmax > FNAV_NAV_GYRO_MAX_RPS) {
+            c->n_gyro_over++;
+        } else if (wmax > c->gyro_max_in_rps) {
+            c->gyro_max_in_rps = wmax;
         }
         {
             const double fn = sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
@@ -977,6 +986,9 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves. */
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
+/* at most this fraction of the samples past FNAV_NAV_GYRO_MAX_RPS are
+ * glitches, not a unit (a walk in deg/s read as rad/s has a fifth or more) */
+#define HX_GYRO_GLITCH_FRAC 1e-3
 /* The swapped-columns check: the gyro's steadiest second (sd / mean of |w|
  * under HX_SWAP_STEADY_CV) reads gravity within HX_SWAP_G_TOL (in g or in
  * m/s^2) while the accelerometer there reads under HX_SWAP_F_MAX_G g: a
@@ -2137,6 +2149,20 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             span_t1 = pc.t_last_ns;
         }
         quiet_close(&pc); /* the last window */
+        if (pc.n_gyro_over > 0 && (double)pc.n_gyro_over <= HX_GYRO_GLITCH_FRAC * (double)pc.n_read) {
+            /* a few samples past any gyro's range among many within it are
+             * glitches (of the sensor or its link), which the navigator
+             * rejected: no unit, whose every motion sample reads past it
+             * (a walk in deg/s read as rad/s: a fifth or more); the units
+             * check reads the others (one spike of 300 rad/s was told
+             * "probably in deg/s") */
+            hx_warn(cmd, "%s: %ld sample%s read a rate past any MEMS gyro's range (%.0f rad/s on an axis; the largest "
+                         "%.4g rad/s) among %ld within it: glitches of the sensor or its link, rejected by the "
+                         "navigator (range_rejected; docs/robustness.md)",
+                    path, pc.n_gyro_over, pc.n_gyro_over == 1 ? "" : "s", FNAV_NAV_GYRO_MAX_RPS, pc.gyro_max_rps,
+                    pc.n_read - pc.n_gyro_over);
+            pc.gyro_max_rps = pc.gyro_max_in_rps;
+        }
         u = units_check(&nav, pc.gyro_max_rps, pc.quiet_w, pc.quiet_f, pc.quiet_cv,
                         pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         hx_walk_seen(&pc.walk),

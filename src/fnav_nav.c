@@ -208,6 +208,21 @@ fnav_status_t fnav_sample_check(const fnav_sample_t *s)
     return st;
 }
 
+/* 1 when every axis is within the widest MEMS ranges (fnav_config.h,
+ * FNAV_NAV_GYRO_MAX_RPS): a rate or force past them is a glitch, which
+ * integrated would turn the heading or throw the velocity. */
+static int sample_plausible(const fnav_sample_t *s)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        if (fnav_fabs(s->gyro_rps[i]) > (fnav_real_t)FNAV_NAV_GYRO_MAX_RPS ||
+            fnav_fabs(s->accel_mps2[i]) > (fnav_real_t)FNAV_NAV_ACCEL_MAX_MPS2) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
 {
     fnav_status_t st;
@@ -227,6 +242,9 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
         nav->stats.nan_inputs++;
         nav->health |= FNAV_HEALTH_NANINF;
         return st;
+    }
+    if (st == FNAV_OK && !sample_plausible(sample)) {
+        st = FNAV_E_RANGE;
     }
     if (st != FNAV_OK) {
         nav->stats.range_inputs++;

@@ -1226,6 +1226,7 @@ static void test_run_exits(void **state)
 typedef struct {
     int aligned;          /**< the last frame is aligned */
     uint32_t resets;      /**< divergence resets */
+    uint32_t range_inputs; /**< samples refused as past any sensor's range */
     double refused_f, rate_hz;
     uint32_t crc;         /**< of every frame's bytes */
 } units_run_t;
@@ -1253,7 +1254,9 @@ static units_run_t units_replay(const hx_log_t *log, double acc_k, double gyr_k,
                 s.accel_mps2[k] = (fnav_real_t)((double)s.accel_mps2[k] * acc_k);
                 s.gyro_rps[k] = (fnav_real_t)((double)s.gyro_rps[k] * gyr_k);
             }
-            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+            st = fnav_nav_push(&nav, &s);
+            /* past the widest gyro range (deg/s read as rad/s): refused */
+            assert_true(st == FNAV_OK || st == FNAV_E_RANGE);
         } else {
             fnav_nav_finish(&nav);
         }
@@ -1268,6 +1271,7 @@ static units_run_t units_replay(const hx_log_t *log, double acc_k, double gyr_k,
     }
     r.aligned = (fr.flags & FNAV_FRAME_ALIGNED) != 0u;
     r.resets = nav.stats.resets;
+    r.range_inputs = nav.stats.range_inputs;
     r.refused_f = (double)nav.align.refused_f_mps2;
     r.rate_hz = (double)nav.stance.rate_hz;
     return r;
@@ -1288,7 +1292,11 @@ static void test_units_not_checked(void **state)
     assert_false(g.aligned);
     assert_true(fabs(g.refused_f - 1.0) < 0.05);
     deg = units_replay(&log, 1.0, 57.29577951308232, 1.0, FNAV_R(200.0)); /* 180 / pi */
+    /* the swings' rates past FNAV_NAV_GYRO_MAX_RPS refused, the rest
+     * navigated 57 times too fast */
+    assert_true(deg.range_inputs > 0u);
     assert_true(deg.resets > 0u);
+    assert_int_equal(si.range_inputs, 0u);
     ms = units_replay(&log, 1.0, 1.0, 1000.0, FNAV_R(200.0));
     assert_true(fabs(ms.rate_hz * 1000.0 / si.rate_hz - 1.0) < 0.01);
     other_rate = units_replay(&log, 1.0, 1.0, 1.0, FNAV_R(1000.0));

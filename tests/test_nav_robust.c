@@ -297,6 +297,52 @@ static void test_divergence_reset(void **state)
     assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
 }
 
+/* One sample past the widest MEMS ranges (a glitch of the sensor or its
+ * link: 300 rad/s, 17,000 deg/s) is rejected, counted and flagged, and the
+ * heading is untouched; integrated, it turned a simulated walk's heading by
+ * 86 deg with health 0 (the numerical audit of 2026-12-06). A rate within
+ * the widest range (60 rad/s, 3,400 deg/s) is taken. fnav_sample_check, a
+ * recorder's check, still passes the glitch (fnav_config.h,
+ * FNAV_NAV_GYRO_MAX_RPS). */
+static void test_implausible_rate(void **state)
+{
+    run_t r;
+    fnav_sample_t s;
+    fnav_real_t yaw0;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    yaw0 = r.last.euler_rad[2];
+    memset(&s, 0, sizeof s);
+    s.accel_mps2[2] = FNAV_R(-9.80665);
+    s.gyro_rps[2] = FNAV_R(300.0);
+    s.t_ns = r.t_ns;
+    r.t_ns += r.dt_ns;
+    assert_int_equal(fnav_sample_check(&s), FNAV_OK);
+    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_E_RANGE);
+    assert_int_equal(g_nav.stats.range_inputs, 1);
+    assert_true(g_nav.health & FNAV_HEALTH_RANGE);
+    s.gyro_rps[2] = FNAV_R(0.0);
+    s.accel_mps2[0] = FNAV_R(5000.0); /* 510 g: past every MEMS accelerometer */
+    s.t_ns = r.t_ns;
+    r.t_ns += r.dt_ns;
+    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_E_RANGE);
+    assert_int_equal(g_nav.stats.range_inputs, 2);
+    still(&r, 2.0);
+    FNAV_ASSERT_CLOSE(r.last.euler_rad[2], yaw0, 1e-4, 0.0);
+    assert_int_equal(g_nav.stats.resets, 0);
+    /* within range: taken (one sample of 60 rad/s turns the heading by 0.3 rad) */
+    s.accel_mps2[0] = FNAV_R(0.0);
+    s.gyro_rps[2] = FNAV_R(60.0);
+    s.t_ns = r.t_ns;
+    r.t_ns += r.dt_ns;
+    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_OK);
+    assert_int_equal(g_nav.stats.range_inputs, 2);
+    still(&r, 1.0);
+    assert_true(fabs((double)r.last.euler_rad[2] - (double)yaw0) > 0.2);
+}
+
 /* The foot turning in place at the body rate w = (2, -1.5, 1.8) rad/s for
  * the given time, the accelerometer reading gravity in the turning body
  * (test_long_swing, which explains it): no stance, no ZUPT. */
@@ -564,6 +610,7 @@ int main(void)
         cmocka_unit_test(test_health_counters_reach_stats),
         cmocka_unit_test(test_undone_run_resets),
         cmocka_unit_test(test_divergence_reset),
+        cmocka_unit_test(test_implausible_rate),
         cmocka_unit_test(test_undone_run_cleared),
         cmocka_unit_test(test_reset_then_renewal),
         cmocka_unit_test(test_spin_2000dps),

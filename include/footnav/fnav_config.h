@@ -107,6 +107,23 @@
 #define FNAV_INPUT_MAX_ABS 1.0e6
 #endif
 
+/** Largest rate and specific force the navigator integrates, per axis:
+ *  beyond the widest MEMS ranges (gyros +-4000 deg/s = 69.8 rad/s,
+ *  accelerometers +-400 g = 3923 m/s^2) with their scale tolerance, so a
+ *  sample past them is a glitch of the sensor or its link, not motion. One
+ *  gyro sample of 300 rad/s at 200 Hz turned the heading by 86 deg without
+ *  a word (a 60 s simulated walk; tests/test_nav_robust.c,
+ *  test_implausible_rate). fnav_nav_push rejects it (FNAV_E_RANGE,
+ *  counted in stats.range_inputs, FNAV_HEALTH_RANGE); fnav_sample_check
+ *  does not, so a recorder still keeps it. Raise them for a sensor beyond
+ *  these ranges. */
+#ifndef FNAV_NAV_GYRO_MAX_RPS
+#define FNAV_NAV_GYRO_MAX_RPS 75.0
+#endif
+#ifndef FNAV_NAV_ACCEL_MAX_MPS2
+#define FNAV_NAV_ACCEL_MAX_MPS2 4000.0
+#endif
+
 #include "fnav_config_check.h"
 
 #endif /* FNAV_CONFIG_H */

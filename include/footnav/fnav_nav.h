@@ -39,12 +39,14 @@
  * stack, which no check can tell from a navigator: initialise it first.
  *
  * Units are not checked: the core refuses only what no sensor reads
- * (NaN/Inf, FNAV_INPUT_MAX_ABS, stamps going back) and navigates the rest
- * as SI. Accelerations in g never align (the alignment refuses a still
- * period off gravity by more than FNAV_ALIGN_GRAVITY_TOL: frames without
- * FNAV_FRAME_ALIGNED, the |f| it refused in nav.align.refused_f_mps2);
- * rates in deg/s align (a foot at rest barely turns) but turn the foot 57
- * times too fast: a nonsense track, usually divergence resets
+ * (NaN/Inf, FNAV_INPUT_MAX_ABS, a rate or force past the widest MEMS
+ * ranges, stamps going back) and navigates the rest as SI. Accelerations
+ * in g never align (the alignment refuses a still period off gravity by
+ * more than FNAV_ALIGN_GRAVITY_TOL: frames without FNAV_FRAME_ALIGNED, the
+ * |f| it refused in nav.align.refused_f_mps2); rates in deg/s align (a
+ * foot at rest barely turns), the swings' samples past
+ * FNAV_NAV_GYRO_MAX_RPS are refused (stats.range_inputs) and the rest turn
+ * the foot 57 times too fast: a nonsense track, usually divergence resets
  * (FNAV_HEALTH_RESET); stamps in ms make the rate estimate
  * (nav.stance.rate_hz) 1000 times too low. Convert in the port's
  * read_sample; `harness replay` checks these marks after a run
@@ -167,7 +169,9 @@ typedef struct {
     uint32_t samples;        /**< samples accepted */
     uint32_t frames;         /**< frames produced */
     uint32_t nan_inputs;     /**< samples rejected: NaN/Inf */
-    uint32_t range_inputs;   /**< samples rejected: |value| > FNAV_INPUT_MAX_ABS or |t_ns| > FNAV_T_NS_MAX */
+    uint32_t range_inputs;   /**< samples rejected: |value| > FNAV_INPUT_MAX_ABS, a rate or force past the widest
+                                  MEMS ranges (FNAV_NAV_GYRO_MAX_RPS, FNAV_NAV_ACCEL_MAX_MPS2), or
+                                  |t_ns| > FNAV_T_NS_MAX */
     uint32_t time_back;      /**< samples rejected: time going backwards */
     uint32_t duplicates;     /**< dt = 0 */
     uint32_t gaps;           /**< dt > 1.5 nominal */
@@ -249,7 +253,9 @@ fnav_real_t fnav_nav_att_sd_max_rad(const fnav_nav_config_t *cfg);
  * see the file comment).
  * @return FNAV_OK; FNAV_E_ARG for NULL; FNAV_E_STATE for a navigator not
  *         initialised (nothing counted); FNAV_E_NANINF, FNAV_E_RANGE (a
- *         value beyond FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
+ *         value beyond FNAV_INPUT_MAX_ABS, a rate or force past the widest
+ *         MEMS ranges, FNAV_NAV_GYRO_MAX_RPS and FNAV_NAV_ACCEL_MAX_MPS2:
+ *         a glitch no sensor reads, or a stamp beyond
  *         FNAV_T_NS_MAX) or FNAV_E_TIME (a stamp behind the last accepted
  *         one, but the FNAV_NAV_TIME_RESYNC-th in a row, which is
  *         accepted): sample rejected (counted, state

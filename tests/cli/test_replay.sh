@@ -1481,6 +1481,15 @@ expect_err "the gyroscope reaches .* rad/s on one axis read as deg/s (.* deg/s),
 grep -q "probably in deg/s" "$T/err" && fail "raw counts read as deg/s: told deg/s again" || pass "raw counts read as deg/s: not told deg/s again"
 expect_err "raw counts? (give a count's size, the datasheet's sensitivity: --units gyro=70mdps for 70 mdps per LSB)" \
     "raw counts: the remedy names a count's size in --units"
+# one glitch past any gyro's range (300 rad/s on gz, mid-walk) is rejected by the navigator and named as a glitch,
+# not as a log in deg/s (it was: exit 1, "probably in deg/s (give --units gyro=deg/s)")
+awk -F, 'NR == 2001 { $7 = 300 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > "$T/glitch.csv"
+expect_exit 0 "one gyro glitch of 300 rad/s" "$H" replay "$T/glitch.csv" --quiet --json "$T/glitch.json"
+expect_err "1 sample read a rate past any MEMS gyro's range (75 rad/s on an axis; the largest 300 rad/s) among .* within it: glitches of the sensor or its link, rejected by the navigator" \
+    "one gyro glitch: named, rejected"
+grep -q "deg/s" "$T/err" && fail "one gyro glitch: told deg/s" || pass "one gyro glitch: not told deg/s"
+json "$T/glitch.json" 'j["health"]["range_rejected"] == 1 and j["units_problem"] is None' \
+    && pass "one gyro glitch: range_rejected 1, no units problem" || fail "one gyro glitch: $(head -c 300 "$T/glitch.json")"
 # --units with a count's size reads the counts: the same trajectory, byte for byte, as the counts scaled to SI
 # beforehand in double (g = 9.80665 m/s^2; 1/2048 g = 0.48828125 mg; 1/16.4 deg/s = 0.06097560975609756 deg/s)
 expect_exit 0 "raw counts read with their size" "$H" replay "$T/in_counts.csv" --quiet \
