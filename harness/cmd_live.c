@@ -31,6 +31,7 @@
  * frames it holds behind an incomplete candidate (fnav_wire_decode_flush;
  * a frame takes 1 ms at 460800 baud). */
 #define IDLE_FLUSH_S 1.0
+#define RECENT_N 64 /* accepted samples remembered to recognise a late copy (0.16 s at 400 Hz) */
 #define MAX_WARNINGS 20
 /* A status line says how long no frame has come once it is this long: a
  * sender that stopped with the port still open (a pty whose writer went, a
@@ -101,8 +102,19 @@ typedef struct {
     uint32_t noise;               /* corrupt candidates between two valid frames whose sequence numbers
                                    * follow on: line noise, no frame lost */
     uint32_t cut;                 /* the candidate the stop (a signal) cut short: a frame on its way */
+    uint32_t idle_cut;            /* the candidate a quiet line's flush ended, no frame after it yet: cut
+                                     if the run stops so (a sensor switched off mid-frame), else corrupt */
     uint32_t repeated;            /* SAMPLE frames received twice (same frame seq and sample), skipped */
     uint32_t seq_repeats;         /* frames whose seq repeats the previous one's (the decoder counts a restart) */
+    /* the last RECENT_N accepted samples' frame seq, time and counter: a
+     * copy of one of them arriving late (a link's stale repetition) is
+     * skipped, not taken for the sender's restart that ends the run */
+    struct {
+        unsigned frame_seq;
+        int64_t t_ns;
+        uint32_t seq;
+    } recent[RECENT_N];
+    unsigned n_recent;
     unsigned prev_frame_seq;      /* seq of the last valid frame */
     int have_prev_frame;
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
@@ -259,6 +271,23 @@ static void warn_limited(live_t *L, const char *msg)
 }
 
 /* Report what the decoder's counters say happened since the last frame. */
+/* 1 when the SAMPLE frame f is a copy of one of the recent accepted ones
+ * (its frame seq, time and counter), received again. */
+static int recent_copy(const live_t *L, const fnav_wire_frame_t *f)
+{
+    fnav_sample_t s;
+    unsigned k, n = L->n_recent < RECENT_N ? L->n_recent : RECENT_N;
+    if (f->type != FNAV_WIRE_SAMPLE || fnav_wire_parse_sample(f, &s) != FNAV_OK) {
+        return 0;
+    }
+    for (k = 0; k < n; k++) {
+        if (L->recent[k].frame_seq == (unsigned)f->seq && L->recent[k].t_ns == s.t_ns && L->recent[k].seq == s.seq) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static void report_link(live_t *L, const fnav_wire_frame_t *f)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
@@ -284,7 +313,7 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
         warn_limited(L, msg);
     }
     if (s->resets != L->last_stats.resets) {
-        if (L->have_prev_frame && (unsigned)f->seq == L->prev_frame_seq) {
+        if (L->have_prev_frame && ((unsigned)f->seq == L->prev_frame_seq || recent_copy(L, f))) {
             /* the previous frame again (a link's repetition), not a restart:
              * a SAMPLE frame's copy is reported where it is skipped, and
              * only there, not also as "restart ... (sender reset?)" */
@@ -428,6 +457,21 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             snprintf(msg, sizeof msg, "repeated frame: sample frame seq %u received twice; the copy skipped",
                      (unsigned)f->seq);
             warn_limited(L, msg);
+        } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns && recent_copy(L, f)) {
+            /* a copy of an earlier frame arriving late (a link's stale
+             * repetition): its time goes back, but it is no restart, which
+             * would end the run with the rest of the session lost (the live
+             * audit: one stale copy kept 3,002 of 16,539 samples). The
+             * decoder counted a sequence restart, and would count the next
+             * frame as one lost: it expects the frame after the last one
+             * taken again. */
+            char msg[160];
+            L->repeated++;
+            L->dec.expect_seq = (uint16_t)(L->last_frame_seq + 1u);
+            snprintf(msg, sizeof msg,
+                     "repeated frame: sample frame seq %u received again after seq %u (a late copy); skipped",
+                     (unsigned)f->seq, L->last_frame_seq);
+            warn_limited(L, msg);
         } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session
              * ends here, with the recording readable to this point */
@@ -440,6 +484,10 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             on_sample(L, &s);
             L->last_frame_seq = (unsigned)f->seq;
             L->last_sample_seq = s.seq;
+            L->recent[L->n_recent % RECENT_N].frame_seq = (unsigned)f->seq;
+            L->recent[L->n_recent % RECENT_N].t_ns = s.t_ns;
+            L->recent[L->n_recent % RECENT_N].seq = s.seq;
+            L->n_recent++;
         } else {
             char msg[160];
             L->bad_samples++;
@@ -501,13 +549,21 @@ static void flush_link(live_t *L, int at_stop)
     while (!L->have_end && !L->restarted && !L->rec_failed && fnav_wire_decode_flush(&L->dec, &f) == FNAV_OK) {
         on_frame(L, &f);
         bad = L->dec.stats.bad_frames;
+        L->idle_cut = 0u; /* a frame came after it: that one was corrupt */
     }
     if (at_stop) {
         /* the candidate after the last frame, cut by a Ctrl-C: a frame on
          * its way when the user stopped (on a UART a frame arrives in
          * pieces, so about half the stops land in one at 400 Hz), not a
-         * corrupt one that makes the run exit 1 */
-        L->cut = L->dec.stats.bad_frames - bad;
+         * corrupt one that makes the run exit 1; also when the line went
+         * quiet first and its flush ended that candidate (the sensor
+         * switched off mid-frame, Ctrl-C a second or more later: it was
+         * counted corrupt, exit 1, by how fast the user pressed it) */
+        L->cut = L->dec.stats.bad_frames - bad + L->idle_cut;
+    } else {
+        /* only the last candidate can be the frame the switch-off cut:
+         * one before bytes that came later was not */
+        L->idle_cut = L->dec.stats.bad_frames - bad;
     }
 }
 
@@ -849,6 +905,7 @@ int hx_cmd_live(int argc, char **argv)
         now = hx_now_s();
         if (n > 0) {
             t_last_byte = now;
+            L.idle_cut = 0u; /* bytes after it: not the last thing on the line */
         } else if (L.dec.fill > 0u && now - t_last_byte >= idle_flush_s) {
             uint32_t frames_before = L.dec.stats.frames;
             flush_link(&L, 0);

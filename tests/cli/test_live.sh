@@ -407,6 +407,18 @@ grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "t
 if grep -q "restart:" "$T/live.err"; then fail "the repetition is reported as a sender restart"; cat "$T/live.err"; else pass "no restart reported for a repeated frame"; fi
 reads_back rec_rep.bin 300 "the recording holds each sample once"
 
+# a late copy (frame 200 again after 201: its time goes back) is skipped as a
+# repetition, not taken for the sender's restart that ended the run with the
+# rest of the session lost (the live audit of 2026-12-06), nor followed by a
+# frame counted lost
+live_case stale rec_stale.bin 5
+expect_rc "$LIVE_RC" 0 "live when a sample frame arrives again late (nothing lost)"
+grep_in "$T/live.err" "sample frame seq 200 received again after seq 201 (a late copy); skipped" "the late copy is reported"
+grep_in "$T/live.out" "0 lost frames" "no frame counted lost after the late copy"
+grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "the summary counts it as a repetition"
+if grep -q "restarted" "$T/live.err"; then fail "the late copy ended the run as a restart"; else pass "no restart for a late copy"; fi
+reads_back rec_stale.bin 300 "the recording holds each sample once, to the end"
+
 # an INFO rate that --baud cannot carry is said, as stream says it (400
 # samples/s of 51-byte frames need 204,000 baud; not to go without a word);
 # once, and not at the default 460800
@@ -487,6 +499,33 @@ expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C inside a frame, nothing lost"
 grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece of a frame is not counted as a corrupt frame"
 grep_in "$T/live.out" "live: end: stopped by SIGINT (Ctrl-C); the frame arriving then was cut" "the summary says a frame was cut by the stop"
 reads_back rec_cut.bin 300 "the recording holds the 300 whole samples"
+
+# --- the sensor switched off mid-frame, Ctrl-C pressed after the line was
+# quiet long enough for the decoder to give the piece up (IDLE_FLUSH_S): the
+# piece is a cut frame as when Ctrl-C comes first (it was counted corrupt,
+# exit 1, by how fast the user pressed it: the live audit of 2026-12-06)
+stop_link
+start_link
+start_live --record "$T/rec_off.bin"
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(300)) + frame(SAMPLE, 301, still(300))[:25])
+time.sleep(6)
+os.close(fd)" "$B" &
+DRIP=$!
+wait_for '[ -f "$T/rec_off.bin" ] && [ "$(records "$T/rec_off.bin")" -ge 300 ]' 100
+sleep 3
+kill -INT "$LIVE" 2>/dev/null
+wait_live
+kill "$DRIP" 2>/dev/null
+wait "$DRIP" 2>/dev/null
+expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C seconds after the sensor went off mid-frame"
+grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece left by the switch-off is not a corrupt frame"
+grep_in "$T/live.out" "the frame arriving then was cut" "the summary says a frame was cut"
+reads_back rec_off.bin 300 "the recording holds the 300 whole samples"
 
 # --- the sender goes quiet with the port still open (stream killed, socat
 # still up, so no hang-up): the status line does not say the same thing

@@ -75,6 +75,11 @@ def main():
         fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
         fr.insert(101, fr[100])
         b = info(400.0) + b''.join(fr) + end(301, 300)
+    elif case == 'stale':
+        # frame 200 (sample 199) again after frame 201: a late copy, its time going back
+        fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
+        fr.insert(201, fr[199])
+        b = info(400.0) + b''.join(fr) + end(301, 300)
     elif case == 'navonly':
         b = info(400.0) + b''.join(
             frame(NAV, k + 1, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
