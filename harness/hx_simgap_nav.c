@@ -1416,6 +1416,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
     double delta = id == FNAV_EFFECT_GSENS ? 1e-3 : 1e-2;
     const size_t nf = (size_t)fr->n + 1; /* J[p * nf + i]: parameter p, stance i */
     firsts_t *base = (firsts_t *)calloc(1, sizeof *base), *pert = (firsts_t *)calloc(1, sizeof *pert);
+    firsts_t *pertm = (firsts_t *)calloc(1, sizeof *pertm);
     double (*J)[3] = (double(*)[3])calloc(((size_t)np + 1) * nf, sizeof *J);
     double (*r)[3] = (double(*)[3])calloc(nf, sizeof *r), (*W)[3][3] = (double(*)[3][3])calloc(nf, sizeof *W);
     int *mi = (int *)calloc(nf, sizeof *mi), sel[24], nsel = 0, ok = -1, *hold = (int *)calloc(nf, sizeof *hold);
@@ -1423,7 +1424,8 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
     int nm = 0, nh = 0;
     memset(out, 0, sizeof *out);
     out->id = id;
-    if (base == NULL || pert == NULL || J == NULL || r == NULL || W == NULL || mi == NULL || hold == NULL || np == 0) {
+    if (base == NULL || pert == NULL || pertm == NULL || J == NULL || r == NULL || W == NULL || mi == NULL ||
+        hold == NULL || np == 0) {
         goto done;
     }
     if (clean_run(nv, segs, rw, given, NULL, base) != 0) {
@@ -1481,10 +1483,20 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
         if (clean_run(nv, segs, rw, given, &c1, pert) != 0) {
             goto done;
         }
+        c1.val[0] = -delta;
+        if (clean_run(nv, segs, rw, given, &c1, pertm) != 0) {
+            goto done;
+        }
+        /* central differences: a one-sided probe of the size of the
+         * fitted values made the answer depend on its sign (the same walk
+         * turned 180 deg about z, or the probe's sign flipped, named other
+         * effects: the consistency audit of 2026-12-06) */
         for (i = 0; i < fr->n; i++) {
             int j = mi[i] >= 0 ? match_swing(base, mi[i], pert) : -1;
+            int jm = mi[i] >= 0 ? match_swing(base, mi[i], pertm) : -1;
             for (a = 0; a < 3; a++) {
-                J[(size_t)p * nf + i][a] = j >= 0 ? (pert->y[j][a] - base->y[mi[i]][a]) / delta : 0.0;
+                J[(size_t)p * nf + i][a] = j >= 0 && jm >= 0 ? (pert->y[j][a] - pertm->y[jm][a]) / (2.0 * delta)
+                                                             : 0.0;
             }
         }
     }
@@ -1680,8 +1692,12 @@ done:
     if (pert != NULL) {
         firsts_free(pert);
     }
+    if (pertm != NULL) {
+        firsts_free(pertm);
+    }
     free(base);
     free(pert);
+    free(pertm);
     free(J);
     free(r);
     free(W);
@@ -2351,6 +2367,26 @@ static const char *axis_name(int a)
     return a == 0 ? " x" : (a == 1 ? " y" : " z");
 }
 
+/* 1 when candidate j of step st ties with the step's selected one: a
+ * linear family, supported on the fit segment, its held-out z within 1 of
+ * the selected one's with no more parameters (the parsimony rule's band,
+ * parsimony_pick): the held-out stances do not tell them apart, and which
+ * is ranked first can turn on the probe's rounding (the consistency audit
+ * of 2026-12-06: a 40 % gz scale on a simulated walk against a gz
+ * g-sensitivity from az, held-out z 7.31 and 7.34). */
+static int tied_with_selected(const navstep_t *st, int j)
+{
+    const navcand_t *sel, *cd;
+    if (st->selected < 0 || j == st->selected || j >= st->ncand) {
+        return 0;
+    }
+    sel = &st->cand[st->selected];
+    cd = &st->cand[j];
+    return cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT && sel->id != FNAV_EFFECT_SATURATION &&
+           sel->id != FNAV_EFFECT_QUANT && cd->id != sel->id && !cd->joined && cd->dQ >= 10.83 &&
+           cd->z_hold >= sel->z_hold - 1.0 && cd->npar <= sel->npar;
+}
+
 static void cand_text(char *b, size_t n, const navcand_t *cd)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
@@ -2479,6 +2515,19 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
                 fprintf(f, "\n");
             }
         }
+        {
+            int nt = 0;
+            for (j = 0; j < nv->step[i].ncand; j++) {
+                if (tied_with_selected(&nv->step[i], j)) {
+                    cand_text(b, sizeof b, &nv->step[i].cand[j]);
+                    fprintf(f, "%s %s", nt++ ? ";" : "    tied with the selected (held-out z within 1, no more parameters):",
+                            b);
+                }
+            }
+            if (nt > 0) {
+                fprintf(f, "\n    these stances do not tell them apart: read the selected as one of them\n");
+            }
+        }
     }
     if (nv->model_gap) {
         fprintf(f, "  the navigation twins' innovations differ from the real's (G above): a twin built from the filter's own\n"
@@ -2539,8 +2588,16 @@ void sg_nav_verdict_text(const sg_nav_t *nv, FILE *f, int *first)
     int i;
     char b[256];
     for (i = 0; i < nv->nsel; i++) {
+        int j, nt = 0;
         cand_text(b, sizeof b, &nv->sel[i]);
-        fprintf(f, "%s %s (walk: held-out stances)", *first ? ":" : ";", b);
+        fprintf(f, "%s %s (walk: held-out stances", *first ? ":" : ";", b);
+        for (j = 0; i < nv->nsteps && j < nv->step[i].ncand; j++) {
+            if (tied_with_selected(&nv->step[i], j)) {
+                fprintf(f, "%s%s", nt++ ? ", " : "; tied with ",
+                        fnav_imuerr_effect_info((fnav_effect_id_t)nv->step[i].cand[j].id)->name);
+            }
+        }
+        fprintf(f, ")");
         *first = 0;
     }
 }
@@ -2671,6 +2728,7 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
             cJSON *co = cand_json(&nv->step[i].cand[j]);
             cJSON_AddBoolToObject(co, "selected", j == nv->step[i].selected);
             cJSON_AddBoolToObject(co, "joined", nv->step[i].cand[j].joined != 0);
+            cJSON_AddBoolToObject(co, "tied_with_selected", tied_with_selected(&nv->step[i], j));
             cJSON_AddItemToArray(ca, co);
         }
         cJSON_AddItemToArray(a, s);
