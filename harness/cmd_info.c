@@ -43,6 +43,8 @@ typedef struct {
     int units_bad;     /* not SI units (hx_units_problem) */
     char units[768];   /* why, and the remedy */
     double gyro_max;   /* the largest |w| on one axis (the units check's) */
+    long gyro_glitches; /* samples past the navigator's gyro range taken for glitches (hx_gyro_glitches) */
+    double gyro_glitch_max; /* the largest |w| among them */
     int empty;         /* no sample (report_empty): every figure but rate_hz is null in the JSON */
 } info_t;
 
@@ -220,6 +222,30 @@ static void analyse(const hx_log_t *log, info_t *in)
         hx_csv_layout_t lay, lay_t; /* the remedies name --units for the interchange CSV, as replay's */
         const hx_csv_layout_t *csv = hx_units_layout(log->meta.format, &lay);
         wmax = wmax > in->peak[5] ? wmax : in->peak[5];
+        {
+            /* a few samples past any gyro's range are glitches, which the
+             * navigator refuses: the units are judged on the others, as
+             * replay judges them (one spike of 300 rad/s was told "probably
+             * in deg/s" here while replay named it a glitch) */
+            long n_over = 0;
+            double w_in = 0.0;
+            for (i = 0; i < n; i++) {
+                double m = 0.0;
+                for (c = 0; c < 3; c++) {
+                    m = fabs(log->gyr[i][c]) > m ? fabs(log->gyr[i][c]) : m;
+                }
+                if (m > FNAV_NAV_GYRO_MAX_RPS) {
+                    n_over++;
+                } else if (m > w_in) {
+                    w_in = m;
+                }
+            }
+            if (hx_gyro_glitches(n_over, (long)n)) {
+                in->gyro_glitches = n_over; /* warned by the caller */
+                in->gyro_glitch_max = wmax;
+                wmax = w_in;
+            }
+        }
         in->gyro_max = wmax;
         /* the rate is not judged here: a static log for the Allan variance
          * may be slow; but the remedy names the time item of the warning
@@ -449,6 +475,13 @@ int hx_cmd_info(int argc, char **argv)
         return e < 0 ? HX_EXIT_DATA : e;
     }
     analyse(&log, &in);
+    if (in.gyro_glitches > 0) {
+        hx_warn("info", "%s: %ld sample%s read a rate past any MEMS gyro's range (%.0f rad/s on an axis; the largest "
+                        "%.4g rad/s) among %ld within it: glitches of the sensor or its link, which the navigator "
+                        "rejects; the units line judges the others (docs/robustness.md)",
+                a.pos[0], in.gyro_glitches, in.gyro_glitches == 1 ? "" : "s", FNAV_NAV_GYRO_MAX_RPS,
+                in.gyro_glitch_max, (long)log.n - in.gyro_glitches);
+    }
     {
         /* time stamps in milliseconds make a 100 Hz log 0.1 Hz: said as
          * allan and psd say it (a warning: a static log may be slow), not

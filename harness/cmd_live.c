@@ -322,6 +322,14 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
                 snprintf(msg, sizeof msg, "repeated frame: frame seq %u received twice", (unsigned)f->seq);
                 warn_limited(L, msg);
             }
+            /* the decoder now expects the frame after the copy: it expects
+             * the one after the last frame again (a late copy moved it
+             * back, and the next frame was counted lost; the frame counter
+             * covers every type, so the last frame, not the last sample's),
+             * and the copy is not the previous frame */
+            L->dec.expect_seq = (uint16_t)(L->prev_frame_seq + 1u);
+            L->last_stats = *s;
+            return;
         } else {
             snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
             warn_limited(L, msg);
@@ -462,15 +470,12 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
              * repetition): its time goes back, but it is no restart, which
              * would end the run with the rest of the session lost (the live
              * audit: one stale copy kept 3,002 of 16,539 samples). The
-             * decoder counted a sequence restart, and would count the next
-             * frame as one lost: it expects the frame after the last one
-             * taken again. */
+             * decoder's sequence is set back by report_link. */
             char msg[160];
             L->repeated++;
-            L->dec.expect_seq = (uint16_t)(L->last_frame_seq + 1u);
             snprintf(msg, sizeof msg,
                      "repeated frame: sample frame seq %u received again after seq %u (a late copy); skipped",
-                     (unsigned)f->seq, L->last_frame_seq);
+                     (unsigned)f->seq, L->prev_frame_seq);
             warn_limited(L, msg);
         } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session

@@ -3761,6 +3761,23 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
     return buf;
 }
 
+/* A count's size as --units reads it back to the same scale: 9 digits
+ * in the first unit that gives it exactly (0.0609756dps, not the mdps
+ * number that rounds otherwise), else 17 digits in the first unit. */
+static const char *count_name(char *buf, size_t size, double scale, const double *unit, const char *const *name,
+                              int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        snprintf(buf, size, "%.9g%s", scale / unit[i], name[i]);
+        if (strtod(buf, NULL) * unit[i] == scale) {
+            return buf;
+        }
+    }
+    snprintf(buf, size, "%.17g%s", scale / unit[0], name[0]);
+    return buf;
+}
+
 const char *hx_accel_unit_name(double acc_scale)
 {
     static char buf[40];
@@ -3768,8 +3785,11 @@ const char *hx_accel_unit_name(double acc_scale)
         return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : acc_scale == HX_UG_MPS2 ? "ug" : "m/s2";
     }
     /* a count's size (--units accel=0.061mg), as --units reads it back */
-    snprintf(buf, sizeof buf, "%.9gmg", acc_scale / HX_MG_MPS2);
-    return buf;
+    {
+        static const double k_scale[4] = { HX_MG_MPS2, HX_G_MPS2, HX_UG_MPS2, 1.0 };
+        static const char *const k_name[4] = { "mg", "g", "ug", "m/s2" };
+        return count_name(buf, sizeof buf, acc_scale, k_scale, k_name, 4);
+    }
 }
 
 const char *hx_gyro_unit_name(double gyr_scale)
@@ -3778,8 +3798,11 @@ const char *hx_gyro_unit_name(double gyr_scale)
     if (gyr_scale == HX_DPS_RPS || gyr_scale == HX_MDPS_RPS || gyr_scale == 1.0) {
         return gyr_scale == HX_DPS_RPS ? "deg/s" : gyr_scale == HX_MDPS_RPS ? "mdps" : "rad/s";
     }
-    snprintf(buf, sizeof buf, "%.9gmdps", gyr_scale / HX_MDPS_RPS); /* --units gyro=8.75mdps */
-    return buf;
+    {
+        static const double k_scale[3] = { HX_MDPS_RPS, HX_DPS_RPS, 1.0 }; /* --units gyro=8.75mdps */
+        static const char *const k_name[3] = { "mdps", "deg/s", "rad/s" };
+        return count_name(buf, sizeof buf, gyr_scale, k_scale, k_name, 3);
+    }
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
@@ -3800,7 +3823,7 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
         len = strlen(buf);
     }
     if (want->gyr_scale != 1.0 && len < size) {
-        snprintf(buf + len, size - len, "gyro=%s,", want->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s");
+        snprintf(buf + len, size - len, "gyro=%s,", hx_gyro_unit_name(want->gyr_scale)); /* a count's size kept */
         len = strlen(buf);
     }
     if (len > 0u && buf[len - 1u] == ',') {

@@ -1279,6 +1279,13 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                          "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is in mdps? "
                          "(read as deg/s by --units gyro=deg/s: give --units gyro=mdps)",
                          gyro_max_rps, in_unit, HX_GYRO_MAX_RPS);
+        } else if (csv->gyr_scale != HX_DPS_RPS && csv->gyr_scale != HX_MDPS_RPS) {
+            /* a count's size given (gyro=8.75mdps): the size is wrong, not
+             * the unit ("(1234 8.75mdps)", "raw counts?" of counts) */
+            HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read with the count's size %s (%.4g counts), "
+                         "beyond the range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): is the count's "
+                         "size the datasheet's sensitivity for the range the sensor was set to?",
+                         gyro_max_rps, u, in_unit, HX_GYRO_MAX_RPS);
         } else {
             HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis read as %s (%.4g %s), beyond the range of "
                          "any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): raw counts? (give a count's size, "
@@ -1307,8 +1314,15 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         /* not silent: it would exit 0 with a walk navigated with rates 57.3
          * times too small. Read as mdps, a file in deg/s is too small as
          * well: told gyro=deg/s (gyro_file_dps) */
-        const char *given = csv->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s";
-        if (gyro_file_dps(csv, gyro_max_rps)) {
+        const char *given = hx_gyro_unit_name(csv->gyr_scale);
+        if (csv->gyr_scale != HX_DPS_RPS && csv->gyr_scale != HX_MDPS_RPS) {
+            /* a count's size given: too small a size, not a unit */
+            HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by "
+                         "%.0f m/s^2 or more within a second), where a walking foot turns at several rad/s in each "
+                         "swing, read with the count's size %s: is it the datasheet's sensitivity for the range the "
+                         "sensor was set to?",
+                         gyro_max_rps, HX_WALK_F_SD_MPS2, given);
+        } else if (gyro_file_dps(csv, gyro_max_rps)) {
             HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by "
                          "%.0f m/s^2 or more within a second), where a walking foot turns at several rad/s in each "
                          "swing: the log is in deg/s? (read as %s by --units gyro=%s: %s)",
@@ -1400,6 +1414,11 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         snprintf(msg + len, msg_size - len, " (docs/log-format.md)");
     }
     return n > 0;
+}
+
+int hx_gyro_glitches(long n_over, long n)
+{
+    return n_over > 0 && (double)n_over <= HX_GYRO_GLITCH_FRAC * (double)n;
 }
 
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
@@ -2149,7 +2168,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             span_t1 = pc.t_last_ns;
         }
         quiet_close(&pc); /* the last window */
-        if (pc.n_gyro_over > 0 && (double)pc.n_gyro_over <= HX_GYRO_GLITCH_FRAC * (double)pc.n_read) {
+        if (hx_gyro_glitches(pc.n_gyro_over, pc.n_read)) {
             /* a few samples past any gyro's range among many within it are
              * glitches (of the sensor or its link), which the navigator
              * rejected: no unit, whose every motion sample reads past it

@@ -198,6 +198,11 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
  *  arithmetic (multiply by 9.80665, divide by 1000). walks: the log walks
  *  (hx_walk_seen), so that a gyro read as deg/s (csv) that stays below
  *  0.75 rad/s is named as rad/s read as deg/s; 0: not known. */
+/** 1 when n_over samples past the navigator's gyro range
+ *  (FNAV_NAV_GYRO_MAX_RPS) among n are glitches, not a unit: at most 1 in
+ *  1000 (a walk in deg/s read as rad/s has a fifth or more past it). The
+ *  units check then reads the largest |w| of the others (replay, info). */
+int hx_gyro_glitches(long n_over, long n);
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, int walks, char *msg, size_t msg_size);
 /** The walk evidence of the units check's gyro mark: |f| (m/s^2) in

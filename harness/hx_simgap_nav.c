@@ -662,6 +662,7 @@ typedef struct {
     int n_fit, n_hold;           /* stances used */
     int simulated;
     int joined;                  /* a lattice or flat top that joined the selected one (same effect, its channel) */
+    int accepted;                /* supported on the fit segment and significant held out (ranked) */
     double G_fit, G_hold, dG_hold, z, t_hold, t_mean, t_sd, expl, expl_lo, expl_hi;
 } navcand_t;
 
@@ -2187,6 +2188,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             const navcand_t *cd = &st->cand[i];
             int isfam = cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT;
             if ((!isfam || cd->dQ >= 10.83) && cd->z_hold > zacc) {
+                st->cand[i].accepted = 1;
                 add_by_z(st->cand, order, nord++, i);
             }
         }
@@ -2260,6 +2262,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 if (fit_family(nv, &r->segs, &rw, fr, t_split, t_hold, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
                     s2->cand[s2->ncand] = cd;
                     if (cd.dQ >= 10.83 && cd.z_hold > zacc) { /* accepted, as in the first step */
+                        s2->cand[s2->ncand].accepted = 1;
                         add_by_z(s2->cand, ord2, n2++, s2->ncand);
                     }
                     s2->ncand++;
@@ -2368,23 +2371,31 @@ static const char *axis_name(int a)
 }
 
 /* 1 when candidate j of step st ties with the step's selected one: a
- * linear family, supported on the fit segment, its held-out z within 1 of
- * the selected one's with no more parameters (the parsimony rule's band,
- * parsimony_pick): the held-out stances do not tell them apart, and which
+ * linear family, accepted (supported on the fit segment, significant held
+ * out), its held-out z within 1 of the best accepted one's (the parsimony
+ * rule's band, parsimony_pick), with no more parameters than the selected: the held-out stances do not tell them apart, and which
  * is ranked first can turn on the probe's rounding (the consistency audit
  * of 2026-12-06: a 40 % gz scale on a simulated walk against a gz
  * g-sensitivity from az, held-out z 7.31 and 7.34). */
 static int tied_with_selected(const navstep_t *st, int j)
 {
     const navcand_t *sel, *cd;
+    double zbest;
+    int k;
     if (st->selected < 0 || j == st->selected || j >= st->ncand) {
         return 0;
     }
     sel = &st->cand[st->selected];
     cd = &st->cand[j];
-    return cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT && sel->id != FNAV_EFFECT_SATURATION &&
-           sel->id != FNAV_EFFECT_QUANT && cd->id != sel->id && !cd->joined && cd->dQ >= 10.83 &&
-           cd->z_hold >= sel->z_hold - 1.0 && cd->npar <= sel->npar;
+    zbest = sel->z_hold; /* the band of parsimony_pick: within 1 of the best accepted */
+    for (k = 0; k < st->ncand; k++) {
+        if (st->cand[k].accepted && st->cand[k].z_hold > zbest) {
+            zbest = st->cand[k].z_hold;
+        }
+    }
+    return cd->accepted && cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT &&
+           sel->id != FNAV_EFFECT_SATURATION && sel->id != FNAV_EFFECT_QUANT && cd->id != sel->id && !cd->joined &&
+           cd->z_hold >= zbest - 1.0 && cd->npar <= sel->npar;
 }
 
 static void cand_text(char *b, size_t n, const navcand_t *cd)

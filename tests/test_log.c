@@ -3705,6 +3705,28 @@ static void test_units_option_utf8(void **state)
         assert_true(l.gyr_scale == 1e-3);
     }
     {
+        /* a count's name reads back to the same scale (9 digits when
+         * they do, else 17): 1/16.4 deg/s and 1e-3 rad/s did not at 9 */
+        static const char *const spec[] = { "gyro=0.06097560975609756dps", "gyro=1e-3rad/s", "accel=0.48828125mg",
+                                            "accel=0.1234567891234mg" };
+        for (i = 0; i < sizeof spec / sizeof spec[0]; i++) {
+            hx_csv_layout_t l, back;
+            char again[80];
+            hx_csv_layout_default(&l);
+            hx_csv_layout_default(&back);
+            assert_int_equal(hx_csv_units_parse(&l, spec[i], err, sizeof err), 0);
+            if (spec[i][0] == 'g') {
+                snprintf(again, sizeof again, "gyro=%s", hx_gyro_unit_name(l.gyr_scale));
+                assert_int_equal(hx_csv_units_parse(&back, again, err, sizeof err), 0);
+                assert_true(back.gyr_scale == l.gyr_scale);
+            } else {
+                snprintf(again, sizeof again, "accel=%s", hx_accel_unit_name(l.acc_scale));
+                assert_int_equal(hx_csv_units_parse(&back, again, err, sizeof err), 0);
+                assert_true(back.acc_scale == l.acc_scale);
+            }
+        }
+    }
+    {
         static const char *const bad[] = { "accel=0.061", "gyro=-1dps", "accel=0g", "gyro=1e7dps", "accel=.mg",
                                            "time=10us", "accel=2xg" };
         for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {

@@ -418,6 +418,13 @@ grep_in "$T/live.out" "0 lost frames" "no frame counted lost after the late copy
 grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "the summary counts it as a repetition"
 if grep -q "restarted" "$T/live.err"; then fail "the late copy ended the run as a restart"; else pass "no restart for a late copy"; fi
 reads_back rec_stale.bin 300 "the recording holds each sample once, to the end"
+# the same among NAV frames, which share the frame counter: the decoder is set back to the frame after the last
+# frame received, not after the last sample frame (the next frame was counted lost; the review of 2026-12-06)
+live_case stale_nav rec_stale_nav.bin 5
+expect_rc "$LIVE_RC" 0 "live when a sample frame arrives again late among NAV frames (nothing lost)"
+grep_in "$T/live.err" "sample frame seq 399 received again after seq 402 (a late copy); skipped" "the late copy among NAV frames is reported"
+grep_in "$T/live.out" "0 lost frames" "no frame counted lost after the late copy among NAV frames"
+reads_back rec_stale_nav.bin 300 "the recording holds each sample once"
 
 # an INFO rate that --baud cannot carry is said, as stream says it (400
 # samples/s of 51-byte frames need 204,000 baud; not to go without a word);

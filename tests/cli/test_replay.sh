@@ -1488,6 +1488,9 @@ expect_exit 0 "one gyro glitch of 300 rad/s" "$H" replay "$T/glitch.csv" --quiet
 expect_err "1 sample read a rate past any MEMS gyro's range (75 rad/s on an axis; the largest 300 rad/s) among .* within it: glitches of the sensor or its link, rejected by the navigator" \
     "one gyro glitch: named, rejected"
 grep -q "deg/s" "$T/err" && fail "one gyro glitch: told deg/s" || pass "one gyro glitch: not told deg/s"
+expect_exit 0 "info on one gyro glitch" "$H" info "$T/glitch.csv"
+expect_err "harness info: warning: .*1 sample read a rate past any MEMS gyro's range" "info: the glitch named as replay names it"
+grep -q "NOT SI" "$T/out" && fail "info: one glitch told not SI: $(grep 'NOT SI' "$T/out")" || pass "info: one glitch is no unit"
 json "$T/glitch.json" 'j["health"]["range_rejected"] == 1 and j["units_problem"] is None' \
     && pass "one gyro glitch: range_rejected 1, no units problem" || fail "one gyro glitch: $(head -c 300 "$T/glitch.json")"
 # --units with a count's size reads the counts: the same trajectory, byte for byte, as the counts scaled to SI
@@ -1507,6 +1510,18 @@ PYEOF
 expect_exit 0 "the counts scaled to SI beforehand" "$H" replay "$T/counts_si.csv" --quiet --out "$T/counts_si_tr.csv"
 cmp -s "$T/counts_sized.csv" "$T/counts_si_tr.csv" && pass "a count's size: the trajectory of the counts scaled beforehand" \
     || fail "a count's size: the trajectories differ"
+# a remedy that names the whole --units value keeps the counts' sizes (it named gyro=deg/s, which reads the
+# counts as deg/s): the counts with their time in ms
+awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' "$T/in_counts.csv" > "$T/counts_ms.csv"
+expect_exit 1 "raw counts with time in ms" "$H" replay "$T/counts_ms.csv" --quiet --units accel=0.48828125mg,gyro=0.0609756dps
+expect_err "give --units time=ms,accel=0.48828125mg,gyro=0.0609756deg/s" "the time remedy keeps the counts' sizes"
+# a wrong count's size is said as such, not "raw counts?" of counts nor "leave gyro=... out"
+expect_exit 1 "counts read with too large a size" "$H" replay "$T/in_counts.csv" --quiet --units accel=0.48828125mg,gyro=10000mdps
+expect_err "read with the count's size 10000mdps (.* counts), beyond the range of any MEMS gyro .*: is the count's size the datasheet's sensitivity" \
+    "too large a count's size: the size questioned"
+expect_exit 1 "counts read with too small a size" "$H" replay "$T/in_counts.csv" --quiet --units accel=0.48828125mg,gyro=2mdps
+expect_err "read with the count's size 2mdps: is it the datasheet's sensitivity" "too small a count's size: the size questioned"
+grep -q "leave gyro=" "$T/err" && fail "too small a count's size: told to leave it out" || pass "too small a count's size: not told to leave it out"
 expect_exit 2 "a count's size without its unit" "$H" replay "$T/in_counts.csv" --quiet --units accel=0.48828125
 expect_err "accel=0.48828125: a count's size is a positive number then its unit (accel=0.061mg, gyro=8.75mdps" \
     "a count's size without its unit: refused, the form named"

@@ -80,6 +80,16 @@ def main():
         fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
         fr.insert(201, fr[199])
         b = info(400.0) + b''.join(fr) + end(301, 300)
+    elif case == 'stale_nav':
+        # SAMPLE and NAV frames interleaved on one frame counter; the sample
+        # frame of seq 399 again after the NAV frame of seq 402
+        fr = []
+        for k in range(300):
+            fr.append(frame(SAMPLE, 2 * k + 1, still(k)))
+            fr.append(frame(NAV, 2 * k + 2, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0),
+                                                         (0.0, 0.0, 0.0))))
+        fr.insert(402, fr[398])
+        b = info(400.0) + b''.join(fr) + end(601, 300)
     elif case == 'navonly':
         b = info(400.0) + b''.join(
             frame(NAV, k + 1, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
