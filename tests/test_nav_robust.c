@@ -304,6 +304,14 @@ static void test_divergence_reset(void **state)
  * the widest range (60 rad/s, 3,400 deg/s) is taken. fnav_sample_check, a
  * recorder's check, still passes the glitch (fnav_config.h,
  * FNAV_NAV_GYRO_MAX_RPS). */
+/* Push s at the run's next time stamp: the navigator's status. */
+static fnav_status_t push_at_next(run_t *r, fnav_sample_t *s)
+{
+    s->t_ns = r->t_ns;
+    r->t_ns += r->dt_ns;
+    return fnav_nav_push(&g_nav, s);
+}
+
 static void test_implausible_rate(void **state)
 {
     run_t r;
@@ -317,17 +325,13 @@ static void test_implausible_rate(void **state)
     memset(&s, 0, sizeof s);
     s.accel_mps2[2] = FNAV_R(-9.80665);
     s.gyro_rps[2] = FNAV_R(300.0);
-    s.t_ns = r.t_ns;
-    r.t_ns += r.dt_ns;
     assert_int_equal(fnav_sample_check(&s), FNAV_OK);
-    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_E_RANGE);
+    assert_int_equal(push_at_next(&r, &s), FNAV_E_RANGE);
     assert_int_equal(g_nav.stats.range_inputs, 1);
     assert_true(g_nav.health & FNAV_HEALTH_RANGE);
     s.gyro_rps[2] = FNAV_R(0.0);
     s.accel_mps2[0] = FNAV_R(5000.0); /* 510 g: past every MEMS accelerometer */
-    s.t_ns = r.t_ns;
-    r.t_ns += r.dt_ns;
-    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_E_RANGE);
+    assert_int_equal(push_at_next(&r, &s), FNAV_E_RANGE);
     assert_int_equal(g_nav.stats.range_inputs, 2);
     still(&r, 2.0);
     FNAV_ASSERT_CLOSE(r.last.euler_rad[2], yaw0, 1e-4, 0.0);
@@ -335,9 +339,7 @@ static void test_implausible_rate(void **state)
     /* within range: taken (one sample of 60 rad/s turns the heading by 0.3 rad) */
     s.accel_mps2[0] = FNAV_R(0.0);
     s.gyro_rps[2] = FNAV_R(60.0);
-    s.t_ns = r.t_ns;
-    r.t_ns += r.dt_ns;
-    assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_OK);
+    assert_int_equal(push_at_next(&r, &s), FNAV_OK);
     assert_int_equal(g_nav.stats.range_inputs, 2);
     still(&r, 1.0);
     assert_true(fabs((double)r.last.euler_rad[2] - (double)yaw0) > 0.2);

@@ -475,6 +475,17 @@ grep_in "$T/live.out" "2 bad frames (2 of them noise between intact frames), 0 l
 if grep -q "incomplete" "$T/live.err"; then fail "a complete stream called incomplete: $(grep incomplete "$T/live.err")"; else pass "no 'incomplete' for a complete stream"; fi
 reads_back rec_z.bin 300 "the recording holds every sample"
 
+# interrupt_after_records RECORDING N PAUSE: once the recording holds N
+# samples, wait PAUSE s, Ctrl-C live and end the sender running as $DRIP
+interrupt_after_records() {
+    wait_for '[ -f "$T/$1" ] && [ "$(records "$T/$1")" -ge '"$2"' ]' 100
+    sleep "$3"
+    kill -INT "$LIVE" 2>/dev/null
+    wait_live
+    kill "$DRIP" 2>/dev/null
+    wait "$DRIP" 2>/dev/null
+}
+
 # --- Ctrl-C while a frame is on its way (a real UART delivers a frame in
 # pieces, so a stop lands inside one about half of the time at 400 Hz): the
 # piece is not a corrupt frame, and the run exits 0 as a stop between frames
@@ -496,12 +507,7 @@ for c in frame(SAMPLE, 301, still(300))[:30]:
 time.sleep(2)
 os.close(fd)" "$B" &
 DRIP=$!
-wait_for '[ -f "$T/rec_cut.bin" ] && [ "$(records "$T/rec_cut.bin")" -ge 300 ]' 100
-sleep 0.5
-kill -INT "$LIVE" 2>/dev/null
-wait_live
-kill "$DRIP" 2>/dev/null
-wait "$DRIP" 2>/dev/null
+interrupt_after_records rec_cut.bin 300 0.5
 expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C inside a frame, nothing lost"
 grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece of a frame is not counted as a corrupt frame"
 grep_in "$T/live.out" "live: end: stopped by SIGINT (Ctrl-C); the frame arriving then was cut" "the summary says a frame was cut by the stop"
@@ -523,12 +529,7 @@ os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in rang
 time.sleep(6)
 os.close(fd)" "$B" &
 DRIP=$!
-wait_for '[ -f "$T/rec_off.bin" ] && [ "$(records "$T/rec_off.bin")" -ge 300 ]' 100
-sleep 3
-kill -INT "$LIVE" 2>/dev/null
-wait_live
-kill "$DRIP" 2>/dev/null
-wait "$DRIP" 2>/dev/null
+interrupt_after_records rec_off.bin 300 3
 expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C seconds after the sensor went off mid-frame"
 grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece left by the switch-off is not a corrupt frame"
 grep_in "$T/live.out" "the frame arriving then was cut" "the summary says a frame was cut"
