@@ -509,7 +509,15 @@ int hx_cmd_info(int argc, char **argv)
     if (log.meta.axes[0]) {
         printf("axes        %s\n", log.meta.axes);
     }
-    printf("samples     %zu%s\n", log.n, log.meta.has_temp ? " (with temperature)" : "");
+    {
+        /* the column or flag alone is no temperature: one read, or none */
+        size_t i, nt = 0;
+        for (i = 0; i < log.n && log.meta.has_temp && log.temp != NULL && nt == 0; i++) {
+            nt += log.temp[i] == log.temp[i]; /* NaN: none read */
+        }
+        printf("samples     %zu%s\n", log.n,
+               !log.meta.has_temp ? "" : nt > 0 ? " (with temperature)" : " (no temperature: every value empty)");
+    }
     if (log.meta.rate_nominal || in.rate_hz > 0.0) {
         /* which stamps, and how: replay's detector and --rate take other
          * estimates (199.44 and 200.1 Hz for a vicon trial that reads 200.000

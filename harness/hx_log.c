@@ -5,6 +5,7 @@
 #include "hx_merge.h"
 #include "hx_names.h"
 #include "hx_xsens.h"
+#include "footnav/fnav_stance.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -645,6 +646,101 @@ static int parse_datetime_ns(const char *s, int64_t *out)
     "YYYY-MM-DD hh:mm:ss[.f] with an optional T, Z or +hh:mm (month, day and hour in one digit or two; "       \
     "hh.mm.ss after T); or hh:mm:ss[.f]"
 
+const char *hx_field_count_text(const char *path, long first, long rows, long checked, int hdr_fields, int more,
+                                char *buf, size_t size)
+{
+    if (!more) {
+        snprintf(buf, size, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a "
+                            "field was lost inside a row, the values after it were read from the wrong columns",
+                 path, first, rows, rows == 1 ? "" : "s", hdr_fields);
+    } else if (rows > 1 && rows == checked) {
+        /* the same on every row: more likely a name the header lacks than
+         * a stray delimiter, and then the columns after it are all wrong */
+        snprintf(buf, size, "%s:%ld: every row (%ld) has more fields than the header's %d (the first here): the "
+                            "header may lack a column's name, and where it lacks one before a column the reader "
+                            "uses, every value after it was read from the wrong column (name each column in the "
+                            "header)",
+                 path, first, rows, hdr_fields);
+    } else {
+        snprintf(buf, size, "%s:%ld: %ld row%s with more fields than the header's %d (the first here): where a "
+                            "stray delimiter split a field, the values after it were read from the wrong columns",
+                 path, first, rows, rows == 1 ? "" : "s", hdr_fields);
+    }
+    return buf;
+}
+
+/* A stamp in seconds to the ns, as the CSV writer writes it (a double's
+ * %.9f is 300 ns off at Unix time: two stamps 1 ns apart read alike). */
+static const char *ns_text(int64_t t_ns, char *buf, size_t size)
+{
+    const int64_t a = t_ns < 0 ? -t_ns : t_ns;
+    snprintf(buf, size, "%s%lld.%09lld", t_ns < 0 ? "-" : "", (long long)(a / 1000000000LL),
+             (long long)(a % 1000000000LL));
+    return buf;
+}
+
+/* A number in exponent notation, [+-]d[.d]e[+-]d, as integer ns in the
+ * unit of 10^k ns: the significant digits shifted by the exponent, the
+ * first digit dropped rounding half up, as parse_time_ns's plain decimals.
+ * 0, -3 beyond 9e18 ns, 1 not of this form (the caller's strtod decides). */
+static int exp_time_ns(const char *s, int k, int64_t *out)
+{
+    char d[40];
+    int m = 0, point = 0, seen_point = 0, neg = 0, eneg = 0, e = 0, i, keep;
+    int64_t v = 0;
+    if (*s == '+' || *s == '-') {
+        neg = *s++ == '-';
+    }
+    for (; isdigit((unsigned char)*s) || (*s == '.' && !seen_point); s++) {
+        if (*s == '.') {
+            seen_point = 1;
+        } else if (m == 0 && *s == '0') {
+            point -= seen_point; /* a leading zero: after the point it moves the digits right */
+        } else if (m < (int)sizeof d) {
+            d[m++] = *s;
+            point += !seen_point;
+        } else if (!seen_point) {
+            return 1; /* more significant digits than kept before the point: strtod's */
+        }
+    }
+    if (*s != 'e' && *s != 'E') {
+        return 1;
+    }
+    s++;
+    if (*s == '+' || *s == '-') {
+        eneg = *s++ == '-';
+    }
+    if (!isdigit((unsigned char)*s)) {
+        return 1;
+    }
+    for (; isdigit((unsigned char)*s); s++) {
+        e = e < 1000 ? e * 10 + (*s - '0') : e;
+    }
+    if (*s != '\0') {
+        return 1;
+    }
+    /* the value is 0.d[0]d[1]... x 10^(point + exponent + k) in ns: the
+     * integer part keeps the first `keep` digits */
+    keep = point + (eneg ? -e : e) + k;
+    if (m == 0 || keep < 0) {
+        *out = 0;
+        return 0;
+    }
+    if (keep > 19) {
+        return -3;
+    }
+    for (i = 0; i < keep; i++) {
+        const int64_t dig = i < m ? d[i] - '0' : 0;
+        if (v > (INT64_C(9000000000000000000) - dig) / 10) {
+            return -3;
+        }
+        v = v * 10 + dig;
+    }
+    v += keep < m && d[keep] >= '5';
+    *out = neg ? -v : v;
+    return 0;
+}
+
 /* Time as text to integer ns, exactly for plain decimals: in seconds
  * (k = 9), ms (6), us (3) or ns (0), 10^k ns to the unit; the point moves
  * in the text, no float (--units time=ns: Unix time in ns to the ns). */
@@ -690,6 +786,15 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
             }
             p++;
             digits++;
+        }
+    }
+    if (*p != '\0' && digits > 0 && (*p == 'e' || *p == 'E')) {
+        /* exponent notation (numpy's %.18e, 1.7000000000025e9): the digits
+         * shifted by the exponent, as integers, exact to the ns as a plain
+         * decimal is (a double has 16 digits: Unix time in ns has 19) */
+        const int rc = exp_time_ns(s, k, out);
+        if (rc != 1) {
+            return rc;
         }
     }
     if (*p != '\0' || digits == 0) {
@@ -755,6 +860,12 @@ static int gz_failed(hx_reader_t *r, long line)
     return 1;
 }
 
+int hx_cr_alone(const char *line)
+{
+    const char *cr = strchr(line, '\r');
+    return cr != NULL && cr[1] != '\n' && cr[1] != '\0';
+}
+
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
 static int read_line(hx_reader_t *r)
 {
@@ -781,11 +892,14 @@ static int read_line(hx_reader_t *r)
     }
     r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
-        const char *cr = strchr(r->line, '\r');
         set_err(r, "%s:%ld: line longer than %d characters%s", r->path, r->stats.lines, HX_LINE_MAX - 1,
-                cr != NULL && cr[1] != '\n' ? " (its lines end in a carriage return alone, the old Mac OS "
-                                              "convention: convert them, e.g. tr '\\r' '\\n')"
-                                            : "");
+                hx_cr_alone(r->line) ? HX_CR_ALONE_HINT : "");
+        return -1;
+    }
+    if (r->stats.lines == 1 && hx_cr_alone(r->line)) {
+        /* a short file of such lines is one line: said, not read as a
+         * header whose last name runs into the data ("gz\r0.01") */
+        set_err(r, "%s:1: a carriage return inside the line%s", r->path, HX_CR_ALONE_HINT);
         return -1;
     }
     return 1;
@@ -2805,8 +2919,9 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         return FNAV_E_RANGE;
     }
     if (r->have_prev && t_ns < r->prev_t_ns) {
-        set_err(r, "%s:%ld: time goes backwards (%.9f s after %.9f s)", r->path, r->stats.lines,
-                (double)t_ns * 1e-9, (double)r->prev_t_ns * 1e-9);
+        char a[32], b[32];
+        set_err(r, "%s:%ld: time goes backwards (%s s after %s s)", r->path, r->stats.lines,
+                ns_text(t_ns, a, sizeof a), ns_text(r->prev_t_ns, b, sizeof b));
         return FNAV_E_TIME;
     }
     r->have_prev = 1;
@@ -2946,8 +3061,9 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 return FNAV_E_RANGE;
             }
             if (r->have_prev && rec.t_ns < r->prev_t_ns) {
-                set_err(r, "%s: record #%ld: time goes backwards (%.9f s after %.9f s)", r->path,
-                        r->record_slot, (double)rec.t_ns * 1e-9, (double)r->prev_t_ns * 1e-9);
+                char a[32], b[32];
+                set_err(r, "%s: record #%ld: time goes backwards (%s s after %s s)", r->path, r->record_slot,
+                        ns_text(rec.t_ns, a, sizeof a), ns_text(r->prev_t_ns, b, sizeof b));
                 return FNAV_E_TIME;
             }
             {
@@ -3931,15 +4047,43 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
     return rate;
 }
 
+/* 1 / the median of the positive intervals among the first
+ * FNAV_STANCE_RATE_PROBE + 1 stamps (fewer with a shorter window ring), as
+ * the stance detector estimates its rate (fnav_stance.c estimate_rate: the
+ * upper median of an even count);
+ * 0 without one. */
+static double start_rate_hz(const int64_t *t, size_t n)
+{
+    enum { PROBE = FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
+                                                                      : FNAV_STANCE_RATE_PROBE };
+    int64_t d[PROBE];
+    size_t i;
+    int k = 0, j;
+    for (i = 1; i < n && i <= PROBE; i++) {
+        const int64_t v = t[i] - t[i - 1];
+        if (v > 0) {
+            for (j = k; j > 0 && d[j - 1] > v; j--) {
+                d[j] = d[j - 1];
+            }
+            d[j] = v;
+            k++;
+        }
+    }
+    return k > 0 ? 1e9 / (double)d[k / 2] : 0.0;
+}
+
 hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r = open_raw(path, fmt, rate_hz, err, err_size);
     if (r == NULL) {
         return NULL;
     }
-    if (r->meta.rate_hz <= 0.0) {
+    if (r->meta.rate_hz <= 0.0 || (r->meta.format == HX_FMT_BIN && !r->meta.rate_nominal)) {
         /* time stamps without a nominal rate (text, or a .bin whose header
-         * gives 0, "unknown"): estimate from the stamps of the first samples
+         * gives 0, "unknown", or a rate not flagged nominal: the writer's
+         * estimate from the stamps, made again here so that what info
+         * says of it is true of this file's stamps): estimate from the
+         * stamps of the first samples
          * (a separate pass over the start, in the log's own format: a .bin
          * read as text here would give nothing) */
         char e2[64];
@@ -3961,6 +4105,7 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
                     r->meta.rate_nominal = 0;
                     r->meta.rate_coarse = coarse;
                 }
+                r->meta.rate_start_hz = start_rate_hz(ts, n);
             }
             hx_reader_close(p);
         }
@@ -4100,22 +4245,16 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
                     "first here) skipped: a gap in the samples there",
                  r->path, r->mt.skipped_first, r->mt.skipped, r->mt.skipped == 1 ? "" : "s");
     }
-    if (r->short_rows > 0) {
-        add_warn(r, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a field was "
-                    "lost inside a row, the values after it were read from the wrong columns",
-                 r->path, r->short_first, r->short_rows, r->short_rows == 1 ? "" : "s", r->hdr_fields);
-    }
-    if (r->long_rows > 1 && r->long_rows == r->rows_checked) {
-        /* the same on every row: more likely a name the header lacks than
-         * a stray delimiter, and then the columns after it are all wrong */
-        add_warn(r, "%s:%ld: every row (%ld) has more fields than the header's %d (the first here): the header may "
-                    "lack a column's name, and where it lacks one before a column the reader uses, every value after "
-                    "it was read from the wrong column (name each column in the header)",
-                 r->path, r->long_first, r->long_rows, r->hdr_fields);
-    } else if (r->long_rows > 0) {
-        add_warn(r, "%s:%ld: %ld row%s with more fields than the header's %d (the first here): where a stray delimiter "
-                    "split a field, the values after it were read from the wrong columns",
-                 r->path, r->long_first, r->long_rows, r->long_rows == 1 ? "" : "s", r->hdr_fields);
+    if (r->short_rows > 0 || r->long_rows > 0) {
+        char w[HX_ERR_SIZE];
+        if (r->short_rows > 0) {
+            add_warn(r, "%s", hx_field_count_text(r->path, r->short_first, r->short_rows, 0, r->hdr_fields, 0, w,
+                                                  sizeof w));
+        }
+        if (r->long_rows > 0) {
+            add_warn(r, "%s", hx_field_count_text(r->path, r->long_first, r->long_rows, r->rows_checked,
+                                                  r->hdr_fields, 1, w, sizeof w));
+        }
     }
     if (st == FNAV_END && !gzdirect(r->gz) && gztell(r->gz) >= 0 &&
         !gz_isize_ends(r->path, (unsigned long)gztell(r->gz))) {

@@ -43,6 +43,8 @@ typedef struct {
     double rate_hz;         /**< nominal sample rate, Hz (0 if unknown) */
     int rate_nominal;       /**< 1: rate from the source; 0: estimated from time stamps */
     int rate_coarse;        /**< estimated from stamps too coarse for their median interval (hx_stamp_rate_hz) */
+    double rate_start_hz;   /**< with an estimated rate: 1 / the median of the first FNAV_STANCE_RATE_PROBE
+                                 positive intervals, the stance detector's own estimate (0: none) */
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
     int stamps_made;        /**< 1: the format has no time stamps; they are the line index / rate */
@@ -330,6 +332,20 @@ typedef struct {
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** 1 when a line holds a carriage return before more text: lines ending in
+ *  a CR alone (classic Mac OS), read as one; HX_CR_ALONE_HINT says so. */
+int hx_cr_alone(const char *line);
+#define HX_CR_ALONE_HINT                                                                                      \
+    " (its lines end in a carriage return alone, the old Mac OS convention: convert them, e.g. tr '\\r' '\\n')"
+
+/** The warning for data rows whose field count is not the header's
+ *  hdr_fields: more = 0, rows with fewer (enough for the columns read);
+ *  more = 1, rows with data past the header's fields, of checked rows
+ *  compared (every one: the header lacks a name). first: the first such
+ *  row's line. Written to buf; returns buf. Shared by the readers and merge. */
+const char *hx_field_count_text(const char *path, long first, long rows, long checked, int hdr_fields, int more,
+                                char *buf, size_t size);
+
 /** The remedy "give --units ITEMS" naming every unit item of want, the
  *  layout that reads the log (time=, accel=g, gyro=deg/s, in the
  *  synopsis's order): one --units value, since a second --units replaces

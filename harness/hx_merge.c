@@ -165,9 +165,11 @@ typedef struct {
     gzFile gz;
     char line[TRI_LINE_MAX];
     long lineno;
+    int open; /* the line has no newline: the file's last, perhaps cut off mid-write */
 } text_t;
 
-/* The next line: 1, 0 at the end, -1 a line too long (msg). */
+/* The next line: 1, 0 at the end, -1 a line too long or cut by a NUL
+ * byte (msg), as the log reader says them (hx_log.c read_line). */
 static int next_line(text_t *t, const char *path, char *msg, size_t size)
 {
     size_t len;
@@ -176,10 +178,23 @@ static int next_line(text_t *t, const char *path, char *msg, size_t size)
     }
     t->lineno++;
     len = strlen(t->line);
-    if (len == sizeof t->line - 1 && t->line[len - 1] != '\n') {
-        say(msg, size, "%s:%ld: line longer than %d bytes", path, t->lineno, TRI_LINE_MAX - 1);
+    /* gzgets stops only at a newline, a full buffer or the end: a line
+     * shorter than that was cut by a NUL byte (a logger's unwritten block) */
+    if (len == 0 || (len < sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz))) {
+        say(msg, size, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)", path,
+            t->lineno);
         return -1;
     }
+    if (len == sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz)) {
+        say(msg, size, "%s:%ld: line longer than %d bytes%s", path, t->lineno, TRI_LINE_MAX - 1,
+            hx_cr_alone(t->line) ? HX_CR_ALONE_HINT : "");
+        return -1;
+    }
+    if (t->lineno == 1 && hx_cr_alone(t->line)) {
+        say(msg, size, "%s:1: a carriage return inside the line%s", path, HX_CR_ALONE_HINT);
+        return -1;
+    }
+    t->open = t->line[len - 1] != '\n';
     return 1;
 }
 
@@ -449,6 +464,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     memcpy(hdr, t->line, sizeof hdr);
     delim = strchr(hdr, ',') != NULL ? ',' : strchr(hdr, '\t') != NULL ? '\t' : strchr(hdr, ';') != NULL ? ';' : ' ';
     nh = hx_split_fields(hdr, delim, hf, TRI_MAX_COLS);
+    f->hdr_fields = nh;
     /* the first data row, for the time column's choice */
     do {
         rc = next_line(t, path, err, err_size);
@@ -461,6 +477,11 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     } while (blank_line(t->line) || t->line[0] == '#');
     nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
     if (find_cols(hf, nh, df, nd, delim, kind, path, 1, &c, err, err_size) != 0) {
+        if (nh == TRI_MAX_COLS && strlen(err) + 80 < err_size) {
+            /* names past the columns read may be the ones looked for */
+            say(err + strlen(err), err_size - strlen(err), " (merge reads the first %d columns of a header; this "
+                                                           "one has more)", TRI_MAX_COLS);
+        }
         goto fail;
     }
     snprintf(f->cols[0], sizeof f->cols[0], "%s", hf[c.t]);
@@ -507,6 +528,26 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                     nd, nd == 1 ? "" : "s", k_sensor[kind], need + 1);
                 break;
             }
+            if (t->open && nd <= need + 1) {
+                /* the last line, no newline, ending in a value read: the
+                 * cut may have shortened it (9.8 read as 9); dropped */
+                f->cut_last = t->lineno;
+                break;
+            }
+            if (nd < nh && !t->open && f->short_rows++ == 0) {
+                f->short_first = t->lineno; /* a field lost inside the row shifts the ones after it */
+            }
+            for (k = nh; k < nd; k++) {
+                if (df[k][0] != '\0') {
+                    /* data past the header's fields (not a trailing
+                     * delimiter): a stray delimiter split a field */
+                    if (f->long_rows++ == 0) {
+                        f->long_first = t->lineno;
+                    }
+                    break;
+                }
+            }
+            f->rows_checked++;
             trc = field_time(df[c.t], delim, l.time_digits, &ns);
             if (unitless && nprobe < TRI_PROBE_ROWS && field_value(df[c.t], delim, &probe[nprobe]) == 0) {
                 nprobe++;

@@ -33,6 +33,12 @@ typedef struct {
     double (*v)[3];           /**< m/s^2 or rad/s */
     double rate_hz;           /**< hx_stamp_rate_hz of the stamps (0: fewer than 2) */
     long steps_back;          /**< rows dropped: a stamp not after the last kept one's */
+    int hdr_fields;           /**< fields of the header line */
+    long rows_checked;        /**< data rows compared with the header's field count */
+    long short_rows, short_first; /**< rows with fewer fields than the header (enough for the columns read),
+                                       and the first one's line */
+    long long_rows, long_first;   /**< rows with data past the header's fields, and the first one's line */
+    long cut_last;            /**< the line of a last line dropped (no newline, ending in a value read), 0 none */
     char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
     int t_from_start;         /**< 1: the time column's name is a time from a start ("elapsed (s)"), which
                                    MetaWear counts from each file's own first sample */

@@ -727,6 +727,25 @@ static void test_csv_flexible(void **state)
     assert_true(r.s[2].t_ns == 2000000000LL);
     assert_true(r.s[3].t_ns == 2000000000LL);
     unlink(p);
+    /* exponent notation is exact to the ns as well, as integers (numpy's
+     * %.18e of Unix time: through a double, 1.700000000002500057e+09 read
+     * 39 ns off, and the plain 1700000000.0025 after its exponent form
+     * went back in time) */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n9.5e-10,1,2,3,4,5,6\n1.23456789015e-1,1,2,3,4,5,6\n"
+                  "1.7000000000025e9,1,2,3,4,5,6\n1700000000.0025,1,2,3,4,5,6\n"
+                  "1.700000000012500057e+09,1,2,3,4,5,6\n17000000000.15E-1,1,2,3,4,5,6\n"
+                  "0.0000017000000000175e15,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 7);
+    assert_true(r.s[0].t_ns == 1); /* 0.95 ns, half up */
+    assert_true(r.s[1].t_ns == 123456789LL);
+    assert_true(r.s[2].t_ns == 1700000000002500000LL);
+    assert_true(r.s[3].t_ns == r.s[2].t_ns);
+    assert_true(r.s[4].t_ns == 1700000000012500057LL);
+    assert_true(r.s[5].t_ns == 1700000000015000000LL);
+    assert_true(r.s[6].t_ns == 1700000000017500000LL);
+    unlink(p);
 }
 
 /* A sample without a temperature in a log that has them (a .bin record

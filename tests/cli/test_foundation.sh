@@ -428,6 +428,27 @@ expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time c
 awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 600; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr.csv"
 expect_exit 1 "lines ending in CR alone" "$H" info "$T/cr.csv"
 expect_err "line longer than 4095 characters (its lines end in a carriage return alone" "CR-only line ends are named"
+awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 20; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr_short.csv"
+expect_exit 1 "a short file of lines ending in CR alone" "$H" info "$T/cr_short.csv"
+expect_err "cr_short.csv:1: a carriage return inside the line (its lines end in a carriage return alone" \
+    "CR-only line ends named in a file shorter than a line's limit (not 'header has no column gz')"
+printf 't,ax,ay,az,gx,gy,gz,temp\n0,0,0,9.8,0,0,0,\n0.01,0,0,9.8,0,0,0,\n' >"$T/temp_empty.csv"
+expect_exit 0 "info on a log whose temperature column is empty" "$H" info "$T/temp_empty.csv"
+expect_out "^samples     2 (no temperature: every value empty)" "info: an empty temperature column is not 'with temperature'"
+# a .bin whose header rate (not flagged nominal: the writer's estimate) the
+# stamps contradict: the rate line is the stamps', as it says
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 500; i++) printf "%.2f,0,0,9.8,0,0,0\n", i / 100 }' >"$T/r100.csv"
+"$H" convert "$T/r100.csv" "$T/r100.bin" 2>/dev/null || fail "r100.bin not written"
+/usr/bin/python3 - "$T/r100.bin" <<'PY' || fail "patching r100.bin's rate"
+import struct, sys, zlib
+b = bytearray(open(sys.argv[1], 'rb').read())
+assert struct.unpack_from('<I', b, 12)[0] & 1 == 0
+struct.pack_into('<d', b, 16, 400.0)
+struct.pack_into('<I', b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[1], 'wb').write(b)
+PY
+expect_exit 0 "info on a .bin whose header rate its stamps contradict" "$H" info "$T/r100.bin"
+expect_out "^rate        100.000 Hz (from the time stamps" "info: a .bin's estimated header rate made again from its stamps (100 Hz, not the header's 400)"
 printf 'not a log at all\n' >"$T/junk.bin"
 expect_exit 1 "junk input" "$H" info "$T/junk.bin"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0,0,-9.8,0,0,0\n0.005,0,0,-9.8,0,0,0\n' >"$T/back.csv"

@@ -333,6 +333,48 @@ n=$(($(wc -l < "$T/o.csv") - 1))
 if [ "$n" -gt 4900 ] && [ "$n" -le 4999 ]; then pass "the samples before the bad row written ($n)"
 else fail "samples written before the bad row: $n"; fi
 
+# the text checks the log reader makes (hx_log.c), made by merge's reader
+# too: a NUL block, a stray delimiter, a cut last line, one sample, a
+# header wider than the columns read, lines ending in CR alone
+head -300 "$T/phyphox_acc.csv" > "$T/a300.csv"
+/usr/bin/python3 - "$T" <<'PY' || fail "writing the text variants"
+import sys
+T = sys.argv[1]
+s = open(T + '/a300.csv').read()
+lines = s.split('\n')
+b = bytearray(s.encode())
+i = s.index('\n' + lines[101].split(',')[0] + ',')   # the row of line 102
+j = s.index('\n', i + 1)
+b[j - 2:j + 198] = b'\0' * 200                        # its last value's end and the rows after it zeroed
+open(T + '/a_nul.csv', 'wb').write(bytes(b))
+f = lines[61].split(',')
+f[1] = f[1][:4] + ',' + f[1][4:]                      # a stray delimiter in row 61's first value
+open(T + '/a_split.csv', 'w').write('\n'.join(lines[:61] + [','.join(f)] + lines[62:]))
+body = lines[:299] + [lines[299][:-3]]                 # the last line cut inside its value, no newline
+open(T + '/a_cut.csv', 'w').write('\n'.join(body))
+open(T + '/a_one.csv', 'w').write('\n'.join(lines[:2]) + '\n')
+wide = ['"pad%d"' % k for k in range(70)]
+open(T + '/a_wide.csv', 'w').write('\n'.join([','.join(wide + lines[0].split(','))] +
+                                             [','.join(['0'] * 70 + l.split(',')) for l in lines[1:299]]) + '\n')
+open(T + '/a_cr.csv', 'w').write('\r'.join(lines[:20]) + '\r')
+PY
+expect_exit 1 "merge: a NUL block in the accelerometer's file" "$H" merge "$T/a_nul.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_nul.csv:102: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks) (the 100 samples before it are merged)" \
+    "merge: the NUL block refused at its line, the samples before it merged"
+expect_exit 0 "merge: a stray delimiter in a row" "$H" merge "$T/a_split.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_split.csv:62: 1 row with more fields than the header's 4 (the first here): where a stray delimiter split a field" \
+    "merge: the row with more fields than the header warned"
+expect_exit 0 "merge: a last line cut without a newline" "$H" merge "$T/a_cut.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_cut.csv:300: last line has no newline and ends in a value the reader uses, which may be cut (file cut off mid-write?); ignored" \
+    "merge: the cut last line dropped with a warning"
+expect_err "a_cut.csv: 298 samples" "merge: the cut line not read"
+expect_exit 1 "merge: one sample" "$H" merge "$T/a_one.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_one.csv: only one sample: merging needs two or more from each file" "merge: one sample refused"
+expect_exit 1 "merge: the axes past column 64" "$H" merge "$T/a_wide.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "(merge reads the first 64 columns of a header; this one has more)" "merge: the column limit named"
+expect_exit 1 "merge: lines ending in CR alone" "$H" merge "$T/a_cr.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "its lines end in a carriage return alone" "merge: CR line ends named"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
     exit 1
