@@ -736,11 +736,55 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             return -1;
         }
     }
+    if (over <= 0.0 && s->err.mask[FNAV_EFFECT_ALIAS] == 0u) {
+        /* the default internal rate, raised where the signal has content
+         * it would fold before the filter or the interval mean sees it: a
+         * vibration tone (2.5 x its frequency: sampled at 2 kHz, 1990 Hz
+         * reached the output as a full 10 Hz line) and impacts shorter
+         * than 2.5 ms (5 internal samples to a landing: 2 ms at 2 kHz put
+         * 12 m/s^2 of aliasing into a run's samples). Unchanged at the
+         * defaults (impacts 5-8 ms, no vibration) */
+        const hx_gait_t *gs[5];
+        double need = 0.0;
+        gs[0] = &s->motion_cfg.walk;
+        gs[1] = &s->motion_cfg.run;
+        gs[2] = &s->motion_cfg.stairs_up;
+        gs[3] = &s->motion_cfg.stairs_down;
+        gs[4] = &s->motion_cfg.turn;
+        for (i = 0; i < 5; i++) {
+            need = gs[i]->impact_s > 0.0 && 5.0 / gs[i]->impact_s > need ? 5.0 / gs[i]->impact_s : need;
+        }
+        for (i = 0; i < 6; i++) {
+            const double f = (double)s->err.vibration.freq_hz[i];
+            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) != 0u && 2.5 * f > need) {
+                need = 2.5 * f;
+            }
+        }
+        if (s->decim == HX_DECIM_MEAN && need < 2.0 * rate) {
+            need = 2.0 * rate; /* a mean needs a sample inside its interval (at 2 kHz and above the default is 1) */
+        }
+        v = ceil(need / rate - 1e-9);
+        if (v > (double)s->err.oversample) {
+            s->err.oversample = v > 1024.0 ? 1024u : (uint32_t)v;
+        }
+    }
     {
         /* the chain of hx_sim_run: picking with alias or without
          * oversampling, else the interval mean or the anti-alias FIR */
-        int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean = s->decim == HX_DECIM_MEAN && !alias;
-        int pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
+        int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean, pick;
+        if (alias && s->decim == HX_DECIM_MEAN) {
+            /* said, not silently dropped; and the samples are then
+             * instantaneous (montecarlo's filter is told so) */
+            hx_warn(cmd, "the alias effect point-samples the signal: --decimation mean is not applied (the samples are "
+                         "instantaneous values)");
+            s->decim = HX_DECIM_FIR;
+        }
+        if (alias && over > 0.0 && (uint32_t)over != fnav_imuerr_internal_factor(&s->err)) {
+            hx_warn(cmd, "the alias effect's factor sets the internal rate (x%u): --oversample %g is not applied",
+                    (unsigned)fnav_imuerr_internal_factor(&s->err), over);
+        }
+        mean = s->decim == HX_DECIM_MEAN && !alias;
+        pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
         /* sampling-instant jitter: refused here, before any output is
          * begun (hx_sim_run would refuse it after the log was created), with
          * the advice that fits the decimation (not --oversample 1 to a
@@ -752,9 +796,42 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                           : "--oversample 1 or the alias effect");
             return -1;
         }
-        for (i = 0; i < 6 && s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && !pick; i++) {
-            double f = (double)s->err.vibration.freq_hz[i];
+        if (mean && fnav_imuerr_internal_factor(&s->err) == 1u) {
+            /* the trapezoid of the interval's two ends, not its mean */
+            hx_error(cmd, "interval means (--decimation mean) need internal samples between the output samples: "
+                          "--oversample 2 or more (--oversample 1 would average the interval's two ends)");
+            return -1;
+        }
+        for (i = 0; i < 6 && s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && !alias; i++) {
+            const int M = (int)fnav_imuerr_internal_factor(&s->err);
+            const double f0 = (double)s->err.vibration.freq_hz[i], fi = rate * M;
+            /* the tone as the internal rate samples it: above its Nyquist
+             * frequency, folded before the filter or the mean sees it */
+            const double f = fabs(f0 - fi * floor(f0 / fi + 0.5));
+            char at[320] = "";
             if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) == 0u) {
+                continue;
+            }
+            if (f != f0) {
+                const double need = ceil(2.5 * f0 / rate - 1e-9);
+                char more[64] = "";
+                if (!pick && M < 1024 && need <= 1024.0) {
+                    snprintf(more, sizeof more, " (--oversample %.0f or more keeps it as it is)", need);
+                }
+                if (pick) {
+                    snprintf(at, sizeof at, "point samples (--oversample 1) fold it to %g Hz", f);
+                } else {
+                    snprintf(at, sizeof at, "it is sampled at %g Hz (%s %d), less than twice its frequency, and "
+                                            "folds to %g Hz before %s sees it%s",
+                             fi, M >= 1024 ? "--oversample's limit," : "--oversample", M, f,
+                             mean ? "the interval mean" : "the filter", more);
+                }
+            }
+            if (pick) {
+                if (f0 > 0.5 * rate) {
+                    hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): %s",
+                            f0, 0.5 * rate, rate, at);
+                }
                 continue;
             }
             if (!mean && f > 0.41 * rate) {
@@ -762,38 +839,42 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                  * one in its transition band (0.41-0.59 f_s) passes
                  * attenuated, folded above f_s / 2 (the warning says so, not
                  * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %) */
-                int M = (int)fnav_imuerr_internal_factor(&s->err), L, n;
+                int L, n;
                 double *h = fir_design(M, HX_SIM_FIR_HALF, &L), gain = 0.0;
                 if (h != NULL) {
                     for (n = 0; n < L; n++) {
-                        gain += h[n] * cos(2.0 * PI * f / (rate * M) * (double)(n - (L - 1) / 2));
+                        gain += h[n] * cos(2.0 * PI * f / fi * (double)(n - (L - 1) / 2));
                     }
                     free(h);
                 }
                 gain = fabs(gain);
                 if (gain < 1e-3) {
                     hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
-                                 "out; add --effect alias to fold it into the output band",
-                            f, 0.41 * rate, rate);
+                                 "out%s%s; add --effect alias to fold it into the output band",
+                            f0, 0.41 * rate, rate, at[0] != '\0' ? "; " : "", at);
                 } else {
                     char fold[64] = "";
                     if (f > 0.5 * rate) {
                         snprintf(fold, sizeof fold, ", folded to %.4g Hz", fabs(f - rate * floor(f / rate + 0.5)));
                     }
-                    hx_warn(cmd, "vibration at %g Hz lies in the anti-alias filter's transition band (%.0f-%.0f Hz at "
-                                 "%g Hz): it passes at %.1f %% of its amplitude%s",
-                            f, 0.41 * rate, 0.59 * rate, rate, 100.0 * gain, fold);
+                    hx_warn(cmd, "vibration at %g Hz %s%s the anti-alias filter's transition band (%.0f-%.0f Hz at %g "
+                                 "Hz): it passes at %.1f %% of its amplitude%s",
+                            f0, at, at[0] != '\0' ? ", in" : "lies in", 0.41 * rate, 0.59 * rate, rate, 100.0 * gain,
+                            fold);
                 }
-                break;
+                continue;
             }
-            if (mean && f > 0.5 * rate) {
+            if (!mean && f != f0) {
+                hx_warn(cmd, "vibration at %g Hz: %s, in the anti-alias filter's pass band: it passes whole", f0, at);
+                continue;
+            }
+            if (mean && (f > 0.5 * rate || f != f0)) {
                 /* the interval mean is no anti-alias filter: it passes the
                  * tone attenuated and folded (the warning says so, not
                  * "filtered out") */
-                hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): the "
+                hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): %s%sthe "
                              "interval means (--decimation mean) attenuate it and fold it to %g Hz",
-                        f, 0.5 * rate, rate, fabs(f - rate * floor(f / rate + 0.5)));
-                break;
+                        f0, 0.5 * rate, rate, at, at[0] != '\0' ? "; " : "", fabs(f - rate * floor(f / rate + 0.5)));
             }
         }
     }

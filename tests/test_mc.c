@@ -102,7 +102,7 @@ static int o_push(void *ctx, const fnav_sample_t *s)
     hx_mc_est_t *e;
     hx_truth_t t;
     double A[15][15], z[15], d[15], ang, dq[4], qf[4], qz[4], cz, sz;
-    int i, j;
+    int i, j, first;
     if (o->npending >= 4) {
         return -1;
     }
@@ -118,6 +118,7 @@ static int o_push(void *ctx, const fnav_sample_t *s)
         return 0;
     }
     e->valid = 1;
+    first = !o->aligned;
     if (!o->aligned) {
         /* as the filter: origin where the sensor is at the alignment, x
          * along its heading then */
@@ -134,6 +135,13 @@ static int o_push(void *ctx, const fnav_sample_t *s)
         for (j = 0; j < 15; j++) {
             d[i] += A[i][j] * z[j];
         }
+    }
+    if (first) {
+        /* the first estimate's attitude is the frame's own, as the
+         * filter's alignment defines it (yaw 0, sd 1 mrad): hx_mc anchors
+         * the frame to it (q_est (x) q_true^-1), which a drawn error would
+         * turn */
+        d[0] = d[1] = d[2] = 0.0;
     }
     for (i = 0; i < 15; i++) {
         for (j = 0; j < 15; j++) {

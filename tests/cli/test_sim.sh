@@ -86,6 +86,52 @@ expect_err "fold it to 50 Hz" "the mean's warning says the tone folds"
 if grep -q "filtered out" "$T/err"; then fail "the mean's warning says filtered out"; else pass "no 'filtered out' for means"; fi
 expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=150
 expect_err "filtered out" "the FIR's warning says filtered out"
+# a tone above the internal rate's Nyquist frequency folded before the
+# filter saw it: 1990 Hz sampled at 2 kHz reached the output as a whole
+# 10 Hz line, told "in the transition band, passes at 100.1 %". The default
+# internal rate is raised to 2.5 x the tone (x25 at 200 Hz): the line is
+# gone; an --oversample too low for it is warned with the fold it makes
+line10() { # the amplitude of the 10 Hz line of az in the log $1
+    /usr/bin/python3 -c "
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
+x = d['az'] - d['az'].mean()
+X = np.abs(np.fft.rfft(x)) * 2 / len(x)
+print('%.6f' % X[int(round(10 * len(x) / 200.0))])" "$1"
+}
+expect_exit 0 "tone at 1990 Hz, default internal rate" "$H" sim --out "$T/v1990.csv" --motion stand --duration 20 \
+    --profile none --effect vibration:ch=az:amp=1:freq_hz=1990
+expect_out "internal x25 (anti-alias FIR)" "the internal rate raised to 2.5 x the tone"
+a10=$(line10 "$T/v1990.csv")
+if /usr/bin/python3 -c "import sys; sys.exit(0 if float('$a10') < 1e-3 else 1)"; then pass "1990 Hz: no 10 Hz line ($a10)"
+else fail "1990 Hz reaches the output as a 10 Hz line of $a10"; fi
+expect_exit 0 "tone at 1990 Hz, --oversample 10" "$H" sim --out "$T/v1990o.csv" --motion stand --duration 20 \
+    --profile none --effect vibration:ch=az:amp=1:freq_hz=1990 --oversample 10
+expect_err "it is sampled at 2000 Hz (--oversample 10), less than twice its frequency, and folds to 10 Hz before the filter sees it (--oversample 25 or more keeps it as it is), in the anti-alias filter's pass band: it passes whole" \
+    "the fold at the internal rate said"
+a10=$(line10 "$T/v1990o.csv")
+if /usr/bin/python3 -c "import sys; sys.exit(0 if abs(float('$a10') - 1) < 0.01 else 1)"; then pass "the warned fold is in the log ($a10)"
+else fail "--oversample 10: the 10 Hz line is $a10, not the whole tone the warning says"; fi
+expect_exit 0 "tone at 1990 Hz, point samples" "$H" sim --out "$T/v1990p.csv" --motion stand --duration 2 \
+    --profile none --effect vibration:ch=az:amp=1:freq_hz=1990 --oversample 1
+expect_err "point samples (--oversample 1) fold it to 10 Hz" "point sampling's fold said"
+# sharp impacts raise the default internal rate too (5 samples to a
+# landing: 0.5 ms at 200 Hz, x50); the defaults (5-8 ms) keep x10
+expect_exit 0 "0.5 ms impacts" "$H" sim --out "$T/imp.csv" --motion run --duration 2 --impact-ms 0.5
+expect_out "internal x50" "0.5 ms impacts sampled at 10 kHz inside"
+expect_exit 0 "default impacts" "$H" sim --out "$T/imp.csv" --motion run --duration 2
+expect_out "internal x10" "the default internal rate at the default impacts"
+# alias point-samples: --decimation mean and --oversample are said to be
+# set aside (montecarlo then tells its filter the samples are instantaneous)
+expect_exit 0 "alias with interval means" "$H" sim --out "$T/al.csv" --duration 1 --decimation mean --effect alias
+expect_err "the alias effect point-samples the signal: --decimation mean is not applied" "alias over mean said"
+expect_exit 0 "alias with --oversample" "$H" sim --out "$T/al.csv" --duration 1 --oversample 8 --effect alias:factor=4
+expect_err "the alias effect's factor sets the internal rate (x4): --oversample 8 is not applied" "alias over --oversample said"
+# interval means need a sample inside the interval
+expect_exit 2 "interval means at --oversample 1" "$H" sim --out "$T/m1.csv" --duration 1 --decimation mean --oversample 1
+expect_err "interval means (--decimation mean) need internal samples between the output samples" "mean at x1 refused"
+expect_exit 0 "interval means at 2 kHz" "$H" sim --out "$T/m2k.csv" --duration 1 --decimation mean --rate 2000
+expect_out "internal x2 (interval means)" "means at 2 kHz sampled at x2 by default (x1 is the default FIR there)"
 # in the filter's transition band (0.41-0.59 f_s) a tone passes attenuated:
 # 90 Hz at 200 Hz at 91 % (measured on the log), 110 Hz at 9 % folded to 90 Hz
 # (neither may be called "filtered out"). The figures the warnings must
