@@ -1930,15 +1930,42 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
          * reader's, from the spans of the first 4096 stamps. Other logs keep
          * the detector's estimate, as firmware would. */
         fnav_nav_config_t c = *cfg;
-        if (r != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && hx_reader_meta(r)->rate_coarse) {
-            c.stance.rate_hz = (fnav_real_t)hx_reader_meta(r)->rate_hz;
+        const hx_meta_t *mt = r != NULL ? hx_reader_meta(r) : NULL;
+        if (mt != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && mt->rate_coarse) {
+            c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
+        } else if (mt != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && !mt->rate_nominal && mt->rate_hz > 0.0 &&
+                   mt->rate_start_hz > 0.0 && fabs(mt->rate_start_hz / mt->rate_hz - 1.0) > HX_START_RATE_TOL) {
+            /* The detector's first intervals are not the log's: a burst of
+             * stamps at the start (a logger's buffer flushed at power-on:
+             * 40 stamps 1 ms apart took a 200 Hz walk for 1000 Hz, a window
+             * of 25 samples, 2 strides of 46) would set its window for the
+             * whole log. It gets the reader's rate, from the median of the
+             * first 4096 intervals, and the warning says so. */
+            c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
+            hx_warn(cmd, "%s: the first %d intervals give %.6g Hz, the first 4,096 %.6g Hz (a burst of stamps at the "
+                         "start, e.g. a logger's buffer flushed at power-on?): the stance detector takes %.6g Hz",
+                    path, FNAV_STANCE_RATE_PROBE, mt->rate_start_hz, mt->rate_hz, mt->rate_hz);
         }
         if (fnav_nav_init(&nav, &c) != FNAV_OK) {
+            char hint[320];
+            hx_csv_layout_t lay;
             hx_nav_init_error(&c,
                               cfg->stance.rate_hz > FNAV_R(0.0)
                                   ? ""
                                   : " (estimated from the log's time stamps, too coarse to give the interval)",
                               "", err, err_size);
+            if (!(cfg->stance.rate_hz > FNAV_R(0.0)) && hx_time_unit_hint((double)c.stance.rate_hz,
+                                                                            (flags & HX_REPLAY_UNITS_OPT)
+                                                                                ? hx_units_layout(in_fmt, &lay)
+                                                                                : NULL,
+                                                                            hint, sizeof hint) &&
+                strlen(err) + strlen(hint) + 3 < err_size) {
+                /* stamps in whole ms read as s (5 s apart, jittered by a
+                 * ms: coarse) were told only "too low", as info tells the
+                 * unit */
+                strcat(err, "; ");
+                strcat(err, hint);
+            }
             hx_reader_close(r);
             hx_log_free(&res);
             return -1;
@@ -2009,6 +2036,10 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         } else if (r != NULL && hx_reader_meta(r)->rate_coarse) {
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "from the time stamps of the first 4,096 samples, too coarse for the detector's estimate");
+        } else if (nav.stance.cfg.rate_hz > FNAV_R(0.0)) {
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "from the time stamps of the first 4,096 samples: 1 / their median interval; the detector's "
+                     "first intervals give %.4g Hz", r != NULL ? hx_reader_meta(r)->rate_start_hz : 0.0);
         } else {
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "the stance detector's estimate: 1 / the median of its first %d intervals",
@@ -2387,8 +2418,14 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         const double per = 1.0 / t->rate_hz;
         for (i = first + 1; i < t->n; i++) {
             const double dt = 1e-9 * (double)(t->f[i].t_ns - t->f[i - 1].t_ns);
-            if (!(dt > 0.0) || (t->max_gap_s > 0.0 && dt > t->max_gap_s && dt > 1.5 * per) ||
-                ((t->f[i].flags & FNAV_FRAME_STANCE) && (t->f[i - 1].flags & FNAV_FRAME_STANCE))) {
+            if (!(dt > 0.0) || ((t->f[i].flags & FNAV_FRAME_STANCE) && (t->f[i - 1].flags & FNAV_FRAME_STANCE))) {
+                continue;
+            }
+            if (t->max_gap_s > 0.0 && dt > t->max_gap_s && dt > 1.5 * per) {
+                /* a time jump while the foot moved: integrated as one
+                 * period, its motion unknown (hx_nav_gappy) */
+                s->motion_jumps++;
+                s->jump_lost_s += dt - per;
                 continue;
             }
             s->motion_s += dt;
@@ -2604,7 +2641,7 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
 
 int hx_nav_gappy(const hx_nav_summary_t *s)
 {
-    return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
+    return (s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s) || s->motion_jumps > 0;
 }
 
 int hx_nav_strides_too_short(const hx_nav_summary_t *s)
@@ -2815,7 +2852,14 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                 100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s,
                 coarse_stamps_remedy(t->in_format));
     }
-    if (hx_nav_gappy(s)) {
+    if (s->motion_jumps > 0) {
+        fprintf(f, "note              %ld time jump%s while the foot moved (%.3f s lost; a jump is an interval over "
+                   "max_gap_s, %.0f ms): the motion inside is not measured, and the walk goes on from the state "
+                   "before it, so position and heading after it are unreliable (a logger's dropout? docs/harness.md, "
+                   "\"replay\")\n",
+                s->motion_jumps, s->motion_jumps == 1 ? "" : "s", s->jump_lost_s, 1e3 * t->max_gap_s);
+    }
+    if (s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s) {
         fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "
                    "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
                    "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",
@@ -2948,6 +2992,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(g, "lost_fraction", num(s->motion_s > 0.0 ? s->gap_lost_s / s->motion_s : (double)NAN));
         cJSON_AddNumberToObject(g, "gaps", (double)s->long_gaps);
         cJSON_AddItemToObject(g, "longest_s", num(s->longest_motion_gap_s));
+        cJSON_AddNumberToObject(g, "jumps_in_motion", (double)s->motion_jumps);
+        cJSON_AddItemToObject(g, "jump_lost_s", num(s->jump_lost_s));
         cJSON_AddBoolToObject(g, "unreliable", hx_nav_gappy(s));
         cJSON_AddItemToObject(root, "motion_gaps", g);
     }

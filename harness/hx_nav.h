@@ -114,7 +114,7 @@ typedef struct {
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
-    char rate_src[128];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
+    char rate_src[192];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
     hx_format_t in_format;       /**< the format read (replay; HX_FMT_AUTO: not said), which chooses the coarse-stamps note's remedy */
     double rate_assumed_hz;      /**< the rate the reader assumed for a log without stamps or --input-rate (the OpenShoe 820 Hz set's; 0: none) */
     double max_gap_s;            /**< the navigator's time-jump limit (fnav_nav_config_t; 0: not known, no interval is a jump) */
@@ -292,6 +292,11 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const
  *  removed (replay's and info's message). */
 #define HX_NO_GRAVITY_MPS2 0.5
 
+/** Largest relative difference between the stance detector's own rate
+ *  estimate (the first FNAV_STANCE_RATE_PROBE intervals) and the reader's
+ *  (the first 4096) under which replay leaves the detector its own. */
+#define HX_START_RATE_TOL 0.05
+
 /** Largest relative difference between a stated rate and its stamps' that
  *  hx_stated_rate_warn lets pass. */
 #define HX_STATED_RATE_TOL 0.10
@@ -367,6 +372,8 @@ typedef struct {
     double gap_lost_s;        /**< the time lost in those intervals that are long gaps (HX_NAV_LONG_GAP_S): each one's excess over the detector's period, s */
     long long_gaps;           /**< their number */
     double longest_motion_gap_s; /**< the longest of them, s (0: none) */
+    long motion_jumps;        /**< time jumps (over max_gap_s) after the alignment with an end out of the stance */
+    double jump_lost_s;       /**< the time they span less one period each, s: the motion inside is not measured */
 } hx_nav_summary_t;
 
 /** Lost samples in motion: the strapdown integrates a gap by interpolating
@@ -385,7 +392,11 @@ typedef struct {
 #define HX_NAV_GAP_LOST_FRACTION 0.01
 
 /** True when the long gaps in motion lose HX_NAV_GAP_LOST_FRACTION of the
- *  motion time or more (the summary's note, the JSON's `motion_gaps.unreliable`). */
+ *  motion time or more, or a time jump came while the foot moved (the
+ *  summary's notes, the JSON's `motion_gaps.unreliable`). A jump is
+ *  integrated as one period: the motion inside is unknown, and one of
+ *  0.5 s mid-stride took openshoe_gx2 walk 2 from 0.50 to 3.70 m of
+ *  closure, xio's long walk from 0.60 to 7.40 m (a generalisation audit). */
 int hx_nav_gappy(const hx_nav_summary_t *s);
 
 /** Time stamps coarser than the sampling: float32 seconds far from 0 (at
