@@ -929,9 +929,13 @@ int hx_cmd_psd(int argc, char **argv)
             none[g] = !res.ok[3 * g] && !res.ok[3 * g + 1] && !res.ok[3 * g + 2];
         }
         if (none[0] && none[1]) {
-            hx_error(CMD, "%s: no channel has power once the DC is treated (dc %s): every channel is constant, so "
+            hx_error(CMD, "%s: no channel has power once the DC is treated (dc %s): every channel is constant%s, so "
                           "no sampling frequency can be read",
-                     a.pos[0], k_dc_names[dc_mode]);
+                     a.pos[0], k_dc_names[dc_mode],
+                     sizeof(fnav_real_t) < sizeof(double)
+                         ? ", or varies by less than the float build's range holds as a power (about 1e-19 of the "
+                           "values' unit: scale them, or use the double build, FNAV_USE_DOUBLE=1)"
+                         : "");
             exit_code = HX_EXIT_DATA;
         } else if (none[0] || none[1]) {
             hx_warn(CMD, "no %s axis has power once the DC is treated: the answer comes from the %s alone",
