@@ -423,6 +423,10 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         snprintf(buf, sizeof buf, "gyro axes do not match the accelerometer's (fits as %s)", t->axes.best_map);
         note_add(note, note_size, buf);
     }
+    if (t->axes.time_problem) {
+        snprintf(buf, sizeof buf, "the sample rate looks wrong (swings fit with intervals x%g)", t->axes.time_scale);
+        note_add(note, note_size, buf);
+    }
     hx_nav_summarize(t, s);
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         /* replay's note: a log that starts moving; its start is not in the

@@ -1036,7 +1036,7 @@ int hx_cmd_live(int argc, char **argv)
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
             if (L.traj.aligned) {
-                if (L.traj.axes.problem) {
+                if (L.traj.axes.problem || L.traj.axes.time_problem) {
                     hx_warn(CMD, "%s: %s", a.pos[0], L.traj.axes.msg);
                 }
                 hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);

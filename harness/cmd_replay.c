@@ -208,6 +208,9 @@ int hx_cmd_replay(int argc, char **argv)
          * units check: a warning, the exit status is the replay's */
         hx_warn("replay", "%s: %s; outputs were computed from the axes as recorded", a.pos[0], traj.axes.msg);
     }
+    if (rc != 2 && traj.axes.time_problem) {
+        hx_warn("replay", "%s: %s; outputs were computed at the rate read", a.pos[0], traj.axes.msg);
+    }
     hx_nav_summarize(&traj, &sum);
     /* standard output holds the rows of `--out -` or `--strides -` alone */
     summary_to = csv == stdout || (strides_path != NULL && strcmp(strides_path, "-") == 0) ? stderr : stdout;

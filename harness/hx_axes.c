@@ -27,6 +27,18 @@
 
 static const char NOT_CHECKED_OOM[] = "not checked: out of memory";
 
+/* The time scales: a rate 2 or 1.25 times too high or low (a wrong
+ * --input-rate, a headerless log at an assumed rate) bends every swing as
+ * a wrong axis map does, and some map then fits better than the recorded
+ * one: a 250 Hz walk read at 200 Hz ended its swings at 2.0 m/s, and was
+ * told to read its gyro axes permuted (a generalisation audit) */
+static const double SCALE[HX_AXES_SCALES] = { 0.5, 0.8, 1.25, 2.0 };
+
+double hx_axes_scale(int i)
+{
+    return i >= 0 && i < HX_AXES_SCALES ? SCALE[i] : 1.0;
+}
+
 static const int PERM[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
 
 fnav_vec3_t hx_axes_map(int k, fnav_vec3_t w)
@@ -74,7 +86,7 @@ static void end_swing(hx_axes_t *a, int64_t t_ns)
     }
     if (a->nswing == a->cap) {
         size_t nc = a->cap ? 2 * a->cap : 256;
-        double *p = (double *)realloc(a->vend, nc * HX_AXES_MAPS * sizeof *p);
+        double *p = (double *)realloc(a->vend, nc * HX_AXES_STATES * sizeof *p);
         if (p == NULL) {
             a->failed = 1;
             return;
@@ -82,21 +94,22 @@ static void end_swing(hx_axes_t *a, int64_t t_ns)
         a->vend = p;
         a->cap = nc;
     }
-    for (k = 0; k < HX_AXES_MAPS; k++) {
-        a->vend[a->nswing * HX_AXES_MAPS + (size_t)k] = (double)fnav_vec3_norm(a->v_mps[k]);
+    for (k = 0; k < HX_AXES_STATES; k++) {
+        a->vend[a->nswing * HX_AXES_STATES + (size_t)k] = (double)fnav_vec3_norm(a->v_mps[k]);
     }
     a->nswing++;
 }
 
-/* One sample of ring slot `slot`, every map: the strapdown's first-order
- * step, q <- q exp(P w dt), v <- v + (C_nb f + (0, 0, g)) dt. */
+/* One sample of ring slot `slot`, every map and time scale: the
+ * strapdown's first-order step, q <- q exp(P w dt), v <- v + (C_nb f + (0,
+ * 0, g)) dt. */
 static void integrate(hx_axes_t *a, size_t slot, double dt)
 {
-    fnav_real_t h = (fnav_real_t)dt;
     fnav_vec3_t g_n = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), a->g_mps2);
     int k;
-    for (k = 0; k < HX_AXES_MAPS; k++) {
-        fnav_vec3_t th = fnav_vec3_scale(hx_axes_map(k, a->gyr[slot]), h);
+    for (k = 0; k < HX_AXES_STATES; k++) {
+        const fnav_real_t h = (fnav_real_t)(k < HX_AXES_MAPS ? dt : dt * SCALE[k - HX_AXES_MAPS]);
+        fnav_vec3_t th = fnav_vec3_scale(hx_axes_map(k < HX_AXES_MAPS ? k : 0, a->gyr[slot]), h);
         a->q_nb[k] = fnav_quat_normalize(fnav_quat_mul(a->q_nb[k], fnav_quat_from_rotvec(th)));
         a->v_mps[k] = fnav_vec3_add(
             a->v_mps[k], fnav_vec3_scale(fnav_vec3_add(fnav_quat_rotate(a->q_nb[k], a->acc[slot]), g_n), h));
@@ -148,7 +161,7 @@ static void start_swing(hx_axes_t *a, size_t n)
     if (fnav_align_from_means(f, fnav_vec3_zero(), a->g_mps2, &al) != FNAV_OK) {
         return;
     }
-    for (k = 0; k < HX_AXES_MAPS; k++) {
+    for (k = 0; k < HX_AXES_STATES; k++) {
         a->q_nb[k] = al.q_nb;
         a->v_mps[k] = fnav_vec3_zero();
     }
@@ -192,7 +205,8 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
 
 static void verdict(const hx_axes_t *a, hx_axes_result_t *r)
 {
-    double med[HX_AXES_MAPS], *col;
+    double med[HX_AXES_STATES], *col;
+    int ts = 0;
     size_t i;
     int k;
     r->swings = a->nswing;
@@ -206,11 +220,17 @@ static void verdict(const hx_axes_t *a, hx_axes_result_t *r)
         return;
     }
     r->v_other_mps = (double)INFINITY;
-    for (k = 0; k < HX_AXES_MAPS; k++) {
+    for (k = 0; k < HX_AXES_STATES; k++) {
         for (i = 0; i < a->nswing; i++) {
-            col[i] = a->vend[i * HX_AXES_MAPS + (size_t)k];
+            col[i] = a->vend[i * HX_AXES_STATES + (size_t)k];
         }
         med[k] = hx_median(col, (int)a->nswing);
+        if (k >= HX_AXES_MAPS) {
+            if (med[k] < med[HX_AXES_MAPS + ts]) {
+                ts = k - HX_AXES_MAPS;
+            }
+            continue;
+        }
         if (med[k] < med[r->best]) {
             r->best = k;
         }
@@ -219,11 +239,25 @@ static void verdict(const hx_axes_t *a, hx_axes_result_t *r)
         }
     }
     free(col);
+    r->v_scaled_mps = med[HX_AXES_MAPS + ts];
+    r->time_scale = SCALE[ts];
+    /* a time scale that fits as a map must (RATIO, MARGIN_MPS) and better
+     * than every map: the rate, not the axes */
+    r->time_problem = med[0] >= RATIO * r->v_scaled_mps && med[0] - r->v_scaled_mps >= MARGIN_MPS &&
+                      r->v_scaled_mps < med[r->best];
     r->v_recorded_mps = med[0];
     r->v_best_mps = med[r->best];
     map_name(r->best, r->best_map, sizeof r->best_map);
-    r->problem = r->best != 0 && med[0] >= RATIO * med[r->best] && med[0] - med[r->best] >= MARGIN_MPS;
-    if (r->problem) {
+    r->problem = !r->time_problem && r->best != 0 && med[0] >= RATIO * med[r->best] &&
+                 med[0] - med[r->best] >= MARGIN_MPS;
+    if (r->time_problem) {
+        snprintf(r->msg, sizeof r->msg,
+                 "the sample rate looks wrong: integrated through each of %zu swings, the foot ends at %.2f m/s "
+                 "(median) with the time as read but at %.2f m/s with every interval %g times as long, a rate %g "
+                 "times the one read (no axis map comes as close: %.2f m/s); check the time stamps' unit or "
+                 "--input-rate (docs/harness.md, \"Axes check\")",
+                 a->nswing, med[0], r->v_scaled_mps, r->time_scale, 1.0 / r->time_scale, med[r->best]);
+    } else if (r->problem) {
         snprintf(r->msg, sizeof r->msg,
                  "the gyroscope's axes do not match the accelerometer's: integrated through each of %zu swings, the "
                  "foot ends at %.2f m/s (median) as recorded but at %.2f m/s with the gyro read as %s; check the "

@@ -4106,6 +4106,8 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
                     r->meta.rate_coarse = coarse;
                 }
                 r->meta.rate_start_hz = start_rate_hz(ts, n);
+                r->meta.rate_span_hz = n > 1u && ts[n - 1u] > ts[0] ? 1e9 * (double)(n - 1u) / (double)(ts[n - 1u] - ts[0])
+                                                                   : 0.0;
             }
             hx_reader_close(p);
         }

@@ -45,6 +45,7 @@ typedef struct {
     int rate_coarse;        /**< estimated from stamps too coarse for their median interval (hx_stamp_rate_hz) */
     double rate_start_hz;   /**< with an estimated rate: 1 / the median of the first FNAV_STANCE_RATE_PROBE
                                  positive intervals, the stance detector's own estimate (0: none) */
+    double rate_span_hz;    /**< with an estimated rate: the first 4096 stamps' count over their span (0: none) */
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
     int stamps_made;        /**< 1: the format has no time stamps; they are the line index / rate */

@@ -1934,13 +1934,17 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (mt != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && mt->rate_coarse) {
             c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
         } else if (mt != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && !mt->rate_nominal && mt->rate_hz > 0.0 &&
-                   mt->rate_start_hz > 0.0 && fabs(mt->rate_start_hz / mt->rate_hz - 1.0) > HX_START_RATE_TOL) {
+                   mt->rate_start_hz > 0.0 && fabs(mt->rate_start_hz / mt->rate_hz - 1.0) > HX_START_RATE_TOL &&
+                   mt->rate_span_hz > 0.0 && fabs(mt->rate_span_hz / mt->rate_hz - 1.0) <= HX_START_RATE_TOL) {
             /* The detector's first intervals are not the log's: a burst of
              * stamps at the start (a logger's buffer flushed at power-on:
              * 40 stamps 1 ms apart took a 200 Hz walk for 1000 Hz, a window
              * of 25 samples, 2 strides of 46) would set its window for the
              * whole log. It gets the reader's rate, from the median of the
-             * first 4096 intervals, and the warning says so. */
+             * first 4096 intervals, and the warning says so; only where that
+             * rate is the stamps' count over their span (stamps in pairs
+             * 0.1 ms apart every 10 ms have a median of either: "Time stamps
+             * in bursts" warns of those). */
             c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
             hx_warn(cmd, "%s: the first %d intervals give %.6g Hz, the first 4,096 %.6g Hz (a burst of stamps at the "
                          "start, e.g. a logger's buffer flushed at power-on?): the stance detector takes %.6g Hz",
@@ -2075,6 +2079,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->events = pc.ev != NULL && !pc.ev_bad;
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
+            if (traj->axes.time_problem && traj->rate_hz > 0.0) {
+                const size_t len = strlen(traj->axes.msg);
+                snprintf(traj->axes.msg + len, sizeof traj->axes.msg - len, "; read at %.6g Hz, so about %.4g Hz",
+                         traj->rate_hz, traj->rate_hz / traj->axes.time_scale);
+            }
             axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, fmt,
                                 remedy_rate, path);
         } else {
@@ -3024,6 +3033,9 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(ax, "v_other_mps", num(checked ? t->axes.v_other_mps : (double)NAN));
         cJSON_AddItemToObject(ax, "best_map", checked ? cJSON_CreateString(t->axes.best_map) : cJSON_CreateNull());
         cJSON_AddItemToObject(ax, "problem", checked ? cJSON_CreateBool(t->axes.problem) : cJSON_CreateNull());
+        cJSON_AddItemToObject(ax, "v_scaled_mps", num(checked ? t->axes.v_scaled_mps : (double)NAN));
+        cJSON_AddItemToObject(ax, "time_scale", num(checked ? t->axes.time_scale : (double)NAN));
+        cJSON_AddItemToObject(ax, "time_problem", checked ? cJSON_CreateBool(t->axes.time_problem) : cJSON_CreateNull());
         cJSON_AddStringToObject(ax, "message", t->axes.msg);
         cJSON_AddItemToObject(root, "axes", ax);
     }

@@ -70,7 +70,7 @@ def real_walks(data):
 
 def part_real(harness, data, tmp):
     checked = best = flagged = 0
-    ratios = []
+    ratios, scaled = [], []
     print('%-44s %6s %9s %9s %6s %s' % ('walk', 'swings', 'recorded', 'rival', 'ratio', 'verdict'))
     for w in real_walks(data):
         a = replay_axes(harness, w, tmp)
@@ -81,13 +81,19 @@ def part_real(harness, data, tmp):
             continue
         checked += 1
         best += a['best_map'] == '(gx, gy, gz)'
-        flagged += a['problem']
+        flagged += a['problem'] or bool(a.get('time_problem'))
         ratios.append(a['v_other_mps'] / a['v_recorded_mps'])
+        scaled.append(a['v_scaled_mps'] / a['v_recorded_mps'])
         print('%-44s %6d %9.3f %9.3f %6.3f %s' % (name, a['swings'], a['v_recorded_mps'], a['v_other_mps'],
-                                                  ratios[-1], 'FLAGGED ' + a['best_map'] if a['problem'] else 'agree'))
+                                                  ratios[-1], 'FLAGGED ' + a['best_map'] if a['problem']
+                                                  else 'TIME x%g' % a['time_scale'] if a.get('time_problem')
+                                                  else 'agree'))
     print('\n%d walks checked: the recorded map is the best on %d, flagged on %d; nearest rival %.3f-%.3f times '
           'the recorded map\'s end speed (median %.3f)' % (checked, best, flagged, min(ratios), max(ratios),
                                                            float(np.median(ratios))))
+    print('time scales (x0.5, x0.8, x1.25, x2 of the intervals): the best ends %.3f-%.3f times the recorded '
+          'time\'s end speed (median %.3f; flagged at 1/1.5 = 0.667 or less)'
+          % (min(scaled), max(scaled), float(np.median(scaled))))
     return flagged
 
 

@@ -281,6 +281,18 @@ awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { $1 = sprintf("%d", $1 * 1
 expect_exit 1 "a walk stamped in whole ms, read as s" "$H" replay "$T/walk_ms.csv"
 expect_err "is too low to navigate: .*; the samples are .* s apart (.* Hz): are the time stamps in seconds? (they look like milliseconds, a .* Hz log: give --units time=ms)" \
     "whole-ms stamps too coarse for a median: the unit questioned"
+# a wrong rate (a log without time stamps read at 0.8 of its rate) bends
+# every swing as a wrong axis map does: the axes check tries time scales
+# too, and says the rate, not a gyro map (it offered a permuted gyro)
+cut -d, -f2- "$T/walk_full.csv" > "$T/walk_nt.csv"
+expect_exit 0 "a walk without stamps at its rate" "$H" replay "$T/walk_nt.csv" --input-rate 398.3
+if grep -q "sample rate looks wrong" "$T/err"; then fail "the right rate called wrong"; else pass "the right rate: no rate warning"; fi
+expect_exit 0 "a walk without stamps at 0.8 of its rate" "$H" replay "$T/walk_nt.csv" --input-rate 318.6 --json "$T/nt.json"
+expect_err "walk_nt.csv: the sample rate looks wrong: integrated through each of [0-9]* swings, the foot ends at .* with every interval 0.8 times as long, a rate 1.25 times the one read .*; read at 318.6 Hz, so about 398.[0-9] Hz" \
+    "a rate 0.8 times the true one named, with the rate that fits"
+if grep -q "do not match the accelerometer" "$T/err"; then fail "a wrong rate offered a gyro map"; else pass "a wrong rate: no gyro map offered"; fi
+json "$T/nt.json" "j['axes']['time_problem'] is True and j['axes']['problem'] is False and j['axes']['time_scale'] == 0.8" \
+    && pass "JSON: time_problem, scale 0.8" || fail "JSON axes: $(grep -A12 '"axes"' "$T/nt.json" | tr -d '\n ')"
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
 expect_err "only downsampling" "rate error explains"
 expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): leave --rate out, or give a rate below 397.920 Hz" "the input rate in the error is named the median's, with what to do"
