@@ -117,16 +117,6 @@ int hx_cmd_merge(int argc, char **argv)
         if (part[k] > 0) {
             hx_warn("merge", "%s (the %zu samples before it are merged)", f[k].error, f[k].n);
         }
-        if (f[k].n < 2) {
-            /* no interval: neither a rate to merge at nor a gap to judge */
-            hx_error("merge", "%s: only one sample%s: merging needs two or more from each file", a.pos[k],
-                     part[k] > 0 ? " before the error above" : "");
-            hx_tri_free(&f[k]);
-            if (k == 1) {
-                hx_tri_free(&f[0]);
-            }
-            return HX_EXIT_DATA;
-        }
         if (f[k].short_rows > 0 || f[k].long_rows > 0) {
             char wt[HX_ERR_SIZE];
             if (f[k].short_rows > 0) {
@@ -145,6 +135,16 @@ int hx_cmd_merge(int argc, char **argv)
         if (f[k].steps_back > 0) {
             hx_warn("merge", "%s: %ld row%s whose stamp is not after the one before dropped", a.pos[k],
                     f[k].steps_back, f[k].steps_back == 1 ? "" : "s");
+        }
+        if (f[k].n < 2) {
+            /* no interval: neither a rate to merge at nor a gap to judge */
+            hx_error("merge", "%s: only one sample%s: merging needs two or more from each file", a.pos[k],
+                     part[k] > 0 ? " before the error above" : "");
+            hx_tri_free(&f[k]);
+            if (k == 1) {
+                hx_tri_free(&f[0]);
+            }
+            return HX_EXIT_DATA;
         }
         describe(a.pos[k], &f[k]);
     }

@@ -862,8 +862,17 @@ static int gz_failed(hx_reader_t *r, long line)
 
 int hx_cr_alone(const char *line)
 {
-    const char *cr = strchr(line, '\r');
-    return cr != NULL && cr[1] != '\n' && cr[1] != '\0';
+    /* every CR; a run of them before a newline is a line end written twice
+     * (CR CR LF: '\r\n' written in a Windows text-mode file, unix2dos run
+     * twice), not a line end of its own */
+    const char *cr = line;
+    while ((cr = strchr(cr, '\r')) != NULL) {
+        cr += strspn(cr, "\r");
+        if (*cr != '\n' && *cr != '\0') {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
@@ -1281,6 +1290,22 @@ static int named_fields(char **f, int n, int total)
     while (n == total && n > 1 && f[n - 1][0] == '\0') {
         n--;
         total--;
+    }
+    return total;
+}
+
+int hx_named_fields(char **f, int n, int total)
+{
+    return named_fields(f, n, total);
+}
+
+int hx_fields_total(const char *line, char delim)
+{
+    const char *q;
+    int quoted = 0, total = 1;
+    for (q = line; delim != ' ' && *q != '\0'; q++) {
+        quoted ^= *q == '"';
+        total += *q == delim && !quoted;
     }
     return total;
 }
@@ -1954,16 +1979,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             r->delim = ' ';
         }
     }
-    {
-        /* the header's own count of fields: split keeps HX_MAX_COLS */
-        const char *q;
-        int quoted = 0;
-        total = 1;
-        for (q = r->line; r->delim != ' ' && *q != '\0'; q++) {
-            quoted ^= *q == '"';
-            total += *q == r->delim && !quoted;
-        }
-    }
+    total = hx_fields_total(r->line, r->delim); /* the header's own count of fields: split keeps HX_MAX_COLS */
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);

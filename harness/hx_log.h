@@ -43,8 +43,8 @@ typedef struct {
     double rate_hz;         /**< nominal sample rate, Hz (0 if unknown) */
     int rate_nominal;       /**< 1: rate from the source; 0: estimated from time stamps */
     int rate_coarse;        /**< estimated from stamps too coarse for their median interval (hx_stamp_rate_hz) */
-    double rate_start_hz;   /**< with an estimated rate: 1 / the median of the first FNAV_STANCE_RATE_PROBE
-                                 positive intervals, the stance detector's own estimate (0: none) */
+    double rate_start_hz;   /**< with an estimated rate: 1 / the median of the positive intervals among the
+                                 first FNAV_STANCE_RATE_PROBE, the stance detector's own estimate (0: none) */
     double rate_span_hz;    /**< with an estimated rate: the first 4096 stamps' count over their span (0: none) */
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
@@ -333,6 +333,13 @@ typedef struct {
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** The fields of a header line as written, its delimiters counted outside
+ *  double quotes (1 for a blank-separated line: not counted). */
+int hx_fields_total(const char *line, char delim);
+/** The header's named fields: n split of total, trailing empty names (a
+ *  trailing delimiter) not counted when the split kept them all. */
+int hx_named_fields(char **f, int n, int total);
+
 /** 1 when a line holds a carriage return before more text: lines ending in
  *  a CR alone (classic Mac OS), read as one; HX_CR_ALONE_HINT says so. */
 int hx_cr_alone(const char *line);

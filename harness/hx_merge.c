@@ -415,7 +415,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
 {
     text_t *t;
     char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[TRI_LINE_MAX], delim = ',';
-    int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0;
+    int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0, total;
     cols_t c;
     size_t cap = 0;
     double scale, *probe = NULL;
@@ -463,8 +463,10 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     }
     memcpy(hdr, t->line, sizeof hdr);
     delim = strchr(hdr, ',') != NULL ? ',' : strchr(hdr, '\t') != NULL ? '\t' : strchr(hdr, ';') != NULL ? ';' : ' ';
+    total = hx_fields_total(hdr, delim);
     nh = hx_split_fields(hdr, delim, hf, TRI_MAX_COLS);
-    f->hdr_fields = nh;
+    /* a trailing delimiter names no field (as the log reader counts them) */
+    f->hdr_fields = delim == ' ' || total > TRI_MAX_COLS ? nh : hx_named_fields(hf, nh, total);
     /* the first data row, for the time column's choice */
     do {
         rc = next_line(t, path, err, err_size);
@@ -477,7 +479,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     } while (blank_line(t->line) || t->line[0] == '#');
     nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
     if (find_cols(hf, nh, df, nd, delim, kind, path, 1, &c, err, err_size) != 0) {
-        if (nh == TRI_MAX_COLS && strlen(err) + 80 < err_size) {
+        if (total > TRI_MAX_COLS && strlen(err) + 80 < err_size) {
             /* names past the columns read may be the ones looked for */
             say(err + strlen(err), err_size - strlen(err), " (merge reads the first %d columns of a header; this "
                                                            "one has more)", TRI_MAX_COLS);
@@ -534,10 +536,10 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                 f->cut_last = t->lineno;
                 break;
             }
-            if (nd < nh && !t->open && f->short_rows++ == 0) {
+            if (nd < f->hdr_fields && !t->open && f->short_rows++ == 0) {
                 f->short_first = t->lineno; /* a field lost inside the row shifts the ones after it */
             }
-            for (k = nh; k < nd; k++) {
+            for (k = f->hdr_fields; k < nd; k++) {
                 if (df[k][0] != '\0') {
                     /* data past the header's fields (not a trailing
                      * delimiter): a stray delimiter split a field */
@@ -629,7 +631,14 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         goto fail;
     }
     if (f->n == 0) {
-        say(err, err_size, "%s", f->error[0] != '\0' ? f->error : "no sample");
+        if (f->error[0] != '\0') {
+            say(err, err_size, "%s", f->error);
+        } else if (f->cut_last > 0) {
+            say(err, err_size, "%s:%ld: no sample: its one row is a last line without a newline, ending in a value "
+                               "that may be cut (file cut off mid-write?)", path, f->cut_last);
+        } else {
+            say(err, err_size, "%s: no sample", path);
+        }
         goto fail;
     }
     f->rate_hz = hx_stamp_rate_hz(f->t_ns, f->n, NULL);

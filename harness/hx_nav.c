@@ -1948,7 +1948,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
             hx_warn(cmd, "%s: the first %d intervals give %.6g Hz, the first 4,096 %.6g Hz (a burst of stamps at the "
                          "start, e.g. a logger's buffer flushed at power-on?): the stance detector takes %.6g Hz",
-                    path, FNAV_STANCE_RATE_PROBE, mt->rate_start_hz, mt->rate_hz, mt->rate_hz);
+                    path, FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
+                                                                              : FNAV_STANCE_RATE_PROBE,
+                    mt->rate_start_hz, mt->rate_hz, mt->rate_hz);
         }
         if (fnav_nav_init(&nav, &c) != FNAV_OK) {
             char hint[320];

@@ -809,7 +809,17 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
              * frequency, folded before the filter or the mean sees it */
             const double f = fabs(f0 - fi * floor(f0 / fi + 0.5));
             char at[320] = "";
+            int j, said = 0;
             if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) == 0u) {
+                continue;
+            }
+            for (j = 0; j < i; j++) {
+                /* one warning for a frequency (the effect's default is
+                 * every channel: six of one were printed) */
+                said |= (s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << j)) != 0u &&
+                        s->err.vibration.freq_hz[j] == s->err.vibration.freq_hz[i];
+            }
+            if (said) {
                 continue;
             }
             if (f != f0) {
@@ -857,10 +867,10 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                     if (f > 0.5 * rate) {
                         snprintf(fold, sizeof fold, ", folded to %.4g Hz", fabs(f - rate * floor(f / rate + 0.5)));
                     }
-                    hx_warn(cmd, "vibration at %g Hz %s%s the anti-alias filter's transition band (%.0f-%.0f Hz at %g "
-                                 "Hz): it passes at %.1f %% of its amplitude%s",
-                            f0, at, at[0] != '\0' ? ", in" : "lies in", 0.41 * rate, 0.59 * rate, rate, 100.0 * gain,
-                            fold);
+                    hx_warn(cmd, "vibration at %g Hz%s%s%s the anti-alias filter's transition band (%.0f-%.0f Hz at "
+                                 "%g Hz): it passes at %.1f %% of its amplitude%s",
+                            f0, at[0] != '\0' ? ": " : "", at, at[0] != '\0' ? ", in" : " lies in", 0.41 * rate,
+                            0.59 * rate, rate, 100.0 * gain, fold);
                 }
                 continue;
             }

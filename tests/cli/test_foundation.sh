@@ -432,6 +432,9 @@ awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 20; i++) printf "%.
 expect_exit 1 "a short file of lines ending in CR alone" "$H" info "$T/cr_short.csv"
 expect_err "cr_short.csv:1: a carriage return inside the line (its lines end in a carriage return alone" \
     "CR-only line ends named in a file shorter than a line's limit (not 'header has no column gz')"
+awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r\r\n"; for (i = 0; i < 20; i++) printf "%.2f,0,0,9.8,0,0,0\r\r\n", i / 100 }' >"$T/crcrlf.csv"
+expect_exit 0 "lines ending in CR CR LF" "$H" info "$T/crcrlf.csv"
+expect_out "^samples     20" "CR CR LF (a Windows text-mode file's line end written twice) read as line ends, not as a CR alone"
 printf 't,ax,ay,az,gx,gy,gz,temp\n0,0,0,9.8,0,0,0,\n0.01,0,0,9.8,0,0,0,\n' >"$T/temp_empty.csv"
 expect_exit 0 "info on a log whose temperature column is empty" "$H" info "$T/temp_empty.csv"
 expect_out "^samples     2 (no temperature: every value empty)" "info: an empty temperature column is not 'with temperature'"

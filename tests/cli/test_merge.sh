@@ -357,6 +357,8 @@ wide = ['"pad%d"' % k for k in range(70)]
 open(T + '/a_wide.csv', 'w').write('\n'.join([','.join(wide + lines[0].split(','))] +
                                              [','.join(['0'] * 70 + l.split(',')) for l in lines[1:299]]) + '\n')
 open(T + '/a_cr.csv', 'w').write('\r'.join(lines[:20]) + '\r')
+open(T + '/a_crcrlf.csv', 'w', newline='').write(''.join(l + '\r\r\n' for l in lines[:299]))
+open(T + '/a_trail.csv', 'w').write('\n'.join([lines[0] + ','] + lines[1:299]) + '\n')
 PY
 expect_exit 1 "merge: a NUL block in the accelerometer's file" "$H" merge "$T/a_nul.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_err "a_nul.csv:102: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks) (the 100 samples before it are merged)" \
@@ -374,6 +376,13 @@ expect_exit 1 "merge: the axes past column 64" "$H" merge "$T/a_wide.csv" "$T/ph
 expect_err "(merge reads the first 64 columns of a header; this one has more)" "merge: the column limit named"
 expect_exit 1 "merge: lines ending in CR alone" "$H" merge "$T/a_cr.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_err "its lines end in a carriage return alone" "merge: CR line ends named"
+# CR CR LF ('\r\n' written by a Windows text-mode file) is a line end, not
+# a CR alone; a header's trailing delimiter names no field (every row was
+# warned "fewer fields than the header's 5")
+expect_exit 0 "merge: CR CR LF line ends" "$H" merge "$T/a_crcrlf.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_crcrlf.csv: 298 samples" "merge: CR CR LF read"
+expect_exit 0 "merge: a header ending in a delimiter" "$H" merge "$T/a_trail.csv" "$T/phyphox.csv" "$T/o.csv"
+if grep -q "fewer fields" "$T/err"; then fail "merge: a trailing delimiter counted as a field"; else pass "merge: a header's trailing delimiter names no field"; fi
 
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
