@@ -20,7 +20,8 @@
 #include "footnav/footnav.h"
 
 #define HX_AXES_MAPS 48          /**< signed permutations of three axes */
-#define HX_AXES_SCALES 4         /**< time scales tried with the recorded map (hx_axes_scale) */
+#define HX_AXES_SCALES 4         /**< time scales tried with the recorded map: the interval read times 0.5, 0.8,
+                                      1.25, 2 (a rate read 0.5, 0.8, 1.25, 2 times the true one) */
 #define HX_AXES_STATES (HX_AXES_MAPS + HX_AXES_SCALES)
 #define HX_AXES_RING 4096        /**< samples held until their frame arrives (the navigator's delay is far less) */
 
@@ -51,8 +52,8 @@ typedef struct {
     int best;                    /**< that map (0: as recorded) */
     char best_map[40];           /**< e.g. "(gx, -gy, gz)" */
     int problem;                 /**< 1: the recorded map is clearly not the gyro's */
-    double v_scaled_mps;         /**< the smallest median end speed with the recorded map and the time between
-                                      samples scaled (hx_axes_scale) */
+    double v_scaled_mps;         /**< the smallest median end speed over its scale with the recorded map and the
+                                      time between samples scaled (HX_AXES_SCALES) */
     double time_scale;           /**< that scale: the true interval over the one read */
     int time_problem;            /**< 1: a time scale fits clearly better than the time read and than every
                                       map (the sample rate is wrong; problem is then 0: no map is offered) */
@@ -69,11 +70,6 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f);
 /** The verdict over the swings seen ("not checked: out of memory" for a
  *  NULL check); frees the check. */
 void hx_axes_finish(hx_axes_t *a, hx_axes_result_t *r);
-
-/** The time scale of state HX_AXES_MAPS + i (0 <= i < HX_AXES_SCALES): the
- *  interval read times it is the one integrated (0.5, 0.8, 1.25, 2: a rate
- *  read 2, 1.25, 0.8, 0.5 times the true one). */
-double hx_axes_scale(int i);
 
 /** Signed permutation k (0..47; 0 the identity) applied to w: out_i = s_i w_p(i). */
 fnav_vec3_t hx_axes_map(int k, fnav_vec3_t w);

@@ -45,7 +45,8 @@ typedef struct {
     int rate_coarse;        /**< estimated from stamps too coarse for their median interval (hx_stamp_rate_hz) */
     double rate_start_hz;   /**< with an estimated rate: 1 / the median of the positive intervals among the
                                  first FNAV_STANCE_RATE_PROBE, the stance detector's own estimate (0: none) */
-    double rate_span_hz;    /**< with an estimated rate: the first 4096 stamps' count over their span (0: none) */
+    double rate_span_hz;    /**< with an estimated rate: the second half of the first 4096 stamps' intervals,
+                                 their count over their sum, intervals over 0.2 s left out (0: none) */
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
     int stamps_made;        /**< 1: the format has no time stamps; they are the line index / rate */

@@ -2082,9 +2082,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
             if (traj->axes.time_problem && traj->rate_hz > 0.0) {
+                /* the input's rate (--rate resamples: its rate is not the one read) */
+                const double rd = traj->in_rate_hz > 0.0 ? traj->in_rate_hz : traj->rate_hz;
                 const size_t len = strlen(traj->axes.msg);
                 snprintf(traj->axes.msg + len, sizeof traj->axes.msg - len, "; read at %.6g Hz, so about %.4g Hz",
-                         traj->rate_hz, traj->rate_hz / traj->axes.time_scale);
+                         rd, rd / traj->axes.time_scale);
             }
             axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, fmt,
                                 remedy_rate, path);

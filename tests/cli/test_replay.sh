@@ -273,6 +273,31 @@ expect_out_re "^rate +398\.[0-9] Hz \(from the time stamps of the first 4,096 sa
 strides_burst=$(sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out")
 if [ -n "$strides_full" ] && [ "$strides_burst" = "$strides_full" ]; then pass "start burst: $strides_burst strides as the walk"
 else fail "start burst: $strides_burst strides, the walk $strides_full"; fi
+# a larger burst (400 stamps, a logger's buffer) and a 1 s dropout early in
+# the log: the check of the reader's rate against the stamps' span looks
+# past both (over the whole span they moved it 6 %, and the detector kept
+# 1000 Hz: 14 strides of 16)
+/usr/bin/python3 - "$T/walk_full.csv" "$T/walk_burst400.csv" <<'PY' || fail "writing walk_burst400.csv"
+import sys
+rows = open(sys.argv[1]).read().splitlines()
+t400 = float(rows[401].split(',')[0])
+out = [rows[0]]
+for i, r in enumerate(rows[1:]):
+    v = r.split(',')
+    t = float(v[0])
+    if i < 400:
+        t = t400 - (400 - i) * 0.001
+    elif i >= 2000:
+        t += 1.0
+    v[0] = '%.9f' % t
+    out.append(','.join(v))
+open(sys.argv[2], 'w').write('\n'.join(out) + '\n')
+PY
+expect_exit 0 "a burst of 400 stamps and an early dropout" "$H" replay "$T/walk_burst400.csv"
+expect_err "walk_burst400.csv: the first 32 intervals give 1000 Hz, the first 4,096 398.[0-9]* Hz" "the larger burst said"
+strides_b400=$(sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out")
+if [ "$strides_b400" = "$strides_full" ]; then pass "400-stamp burst: $strides_b400 strides as the walk"
+else fail "400-stamp burst: $strides_b400 strides, the walk $strides_full"; fi
 # stamps in whole milliseconds read as seconds (2 and 3 "s" apart: too
 # coarse for a median) were told only "too low to navigate"; the unit is
 # questioned as info questions it
