@@ -924,7 +924,7 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         long k;
         lineno++;
         if (nul) {
-            series_fail(R, binary, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)",
+            series_fail(R, binary, "%s:%ld: " HX_NUL_TEXT,
                         path, lineno);
             rc = 1;
             break;

@@ -129,8 +129,7 @@ int hx_cmd_merge(int argc, char **argv)
             }
         }
         if (f[k].cut_last > 0) {
-            hx_warn("merge", "%s:%ld: last line has no newline and ends in a value the reader uses, which may be "
-                             "cut (file cut off mid-write?); ignored", a.pos[k], f[k].cut_last);
+            hx_warn("merge", "%s:%ld: " HX_CUT_LAST_TEXT, a.pos[k], f[k].cut_last);
         }
         if (f[k].steps_back > 0) {
             hx_warn("merge", "%s: %ld row%s whose stamp is not after the one before dropped", a.pos[k],

@@ -5,7 +5,6 @@
 #include "hx_merge.h"
 #include "hx_names.h"
 #include "hx_xsens.h"
-#include "footnav/fnav_stance.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -890,7 +889,7 @@ static int read_line(hx_reader_t *r)
     /* gzgets stops only at a newline, a full buffer or the end of the
      * file: a line shorter than that was cut by a NUL byte in the data */
     if (n == 0 || (n < sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz))) {
-        set_err(r, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)", r->path,
+        set_err(r, "%s:%ld: " HX_NUL_TEXT, r->path,
                 r->stats.lines);
         return -1;
     }
@@ -1285,18 +1284,13 @@ int hx_name_eq(const char *a, const char *b)
  * none (a spreadsheet's export), so rows without one have every field and
  * are not warned "fewer fields than the header's". The names split kept
  * (n) are enough to tell, unless it kept fewer than total. */
-static int named_fields(char **f, int n, int total)
+int hx_named_fields(char **f, int n, int total)
 {
     while (n == total && n > 1 && f[n - 1][0] == '\0') {
         n--;
         total--;
     }
     return total;
-}
-
-int hx_named_fields(char **f, int n, int total)
-{
-    return named_fields(f, n, total);
 }
 
 int hx_fields_total(const char *line, char delim)
@@ -1982,7 +1976,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     total = hx_fields_total(r->line, r->delim); /* the header's own count of fields: split keeps HX_MAX_COLS */
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
-    r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
+    r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : hx_named_fields(f, n, total);
     if (r->meta.format == HX_FMT_CSV && !dc_line && all_numeric(f, n)) {
         const int h = numbered_columns(r, f, n, time_required);
         if (h != 0) {
@@ -2211,7 +2205,7 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
                : strchr(r->line, ';') != NULL ? ';'
                                               : ' ';
     n = split(r->line, r->delim, f, HX_MAX_COLS);
-    r->hdr_fields = named_fields(f, n, n);
+    r->hdr_fields = hx_named_fields(f, n, n);
     if (hx_mtmgr_header(&r->mt, f, n, msg, sizeof msg) != 0) {
         set_err(r, "%s:%ld: %s", r->path, r->stats.lines, msg);
         return -1;
@@ -2620,8 +2614,7 @@ static fnav_status_t next_text_line(hx_reader_t *r, fnav_sample_t *s)
         st = next_text_fields(r, s);
         if (st == FNAV_OK && r->nfields <= r->ncols_needed) {
             r->stats.cut_lines++;
-            add_warn(r, "%s:%ld: last line has no newline and ends in a value the reader uses, which may be cut "
-                        "(file cut off mid-write?); ignored", r->path, r->stats.lines);
+            add_warn(r, "%s:%ld: " HX_CUT_LAST_TEXT, r->path, r->stats.lines);
             return FNAV_END;
         }
         return st;
@@ -4070,8 +4063,7 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
  * 0 without one. */
 static double start_rate_hz(const int64_t *t, size_t n)
 {
-    enum { PROBE = FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
-                                                                      : FNAV_STANCE_RATE_PROBE };
+    enum { PROBE = HX_STANCE_PROBE };
     int64_t d[PROBE];
     size_t i;
     int k = 0, j;
@@ -4500,10 +4492,8 @@ fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s)
             return FNAV_E_IO;
         }
     } else {
-        int64_t t = s->t_ns;
-        int64_t a = t < 0 ? -t : t;
-        fprintf(w->f, "%s%lld.%09lld", t < 0 ? "-" : "", (long long)(a / 1000000000LL),
-                (long long)(a % 1000000000LL));
+        char tb[32];
+        fputs(ns_text(s->t_ns, tb, sizeof tb), w->f);
         put_f32(w->f, (float)s->accel_mps2[0]);
         put_f32(w->f, (float)s->accel_mps2[1]);
         put_f32(w->f, (float)s->accel_mps2[2]);

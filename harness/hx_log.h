@@ -18,6 +18,7 @@
 
 #include <stdio.h>
 #include "footnav/fnav_types.h"
+#include "footnav/fnav_stance.h"
 #include "hx_names.h"
 
 /** Input formats. */
@@ -334,6 +335,19 @@ typedef struct {
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** A line cut by a NUL byte (gzgets stops at none: the text after it is
+ *  lost), as every text reader says it after "PATH:LINE: ". */
+#define HX_NUL_TEXT "a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)"
+/** A last line without a newline that ends in a value read, dropped, as
+ *  the interchange CSV's reader and merge say it after "PATH:LINE: ". */
+#define HX_CUT_LAST_TEXT                                                                                      \
+    "last line has no newline and ends in a value the reader uses, which may be cut (file cut off mid-write?); " \
+    "ignored"
+/** The stance detector's rate probe: the intervals among its first samples
+ *  it takes the median of (fnav_stance.c PROBE; fewer with a shorter ring). */
+#define HX_STANCE_PROBE                                                                                       \
+    (FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1 : FNAV_STANCE_RATE_PROBE)
+
 /** The fields of a header line as written, its delimiters counted outside
  *  double quotes (1 for a blank-separated line: not counted). */
 int hx_fields_total(const char *line, char delim);

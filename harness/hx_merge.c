@@ -181,7 +181,7 @@ static int next_line(text_t *t, const char *path, char *msg, size_t size)
     /* gzgets stops only at a newline, a full buffer or the end: a line
      * shorter than that was cut by a NUL byte (a logger's unwritten block) */
     if (len == 0 || (len < sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz))) {
-        say(msg, size, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)", path,
+        say(msg, size, "%s:%ld: " HX_NUL_TEXT, path,
             t->lineno);
         return -1;
     }

@@ -1948,8 +1948,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             c.stance.rate_hz = (fnav_real_t)mt->rate_hz;
             hx_warn(cmd, "%s: the first %d intervals give %.6g Hz, the first 4,096 %.6g Hz (a burst of stamps at the "
                          "start, e.g. a logger's buffer flushed at power-on?): the stance detector takes %.6g Hz",
-                    path, FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
-                                                                              : FNAV_STANCE_RATE_PROBE,
+                    path, HX_STANCE_PROBE,
                     mt->rate_start_hz, mt->rate_hz, mt->rate_hz);
         }
         if (fnav_nav_init(&nav, &c) != FNAV_OK) {
@@ -2048,9 +2047,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                      "first intervals give %.4g Hz", r != NULL ? hx_reader_meta(r)->rate_start_hz : 0.0);
         } else {
             snprintf(traj->rate_src, sizeof traj->rate_src,
-                     "the stance detector's estimate: 1 / the median of its first %d intervals",
-                     FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
-                                                                         : FNAV_STANCE_RATE_PROBE); /* fnav_stance.c's PROBE */
+                     "the stance detector's estimate: 1 / the median of its first %d intervals", HX_STANCE_PROBE);
         }
         traj->max_gap_s = (double)nav.cfg.max_gap_s;
         traj->window = nav.stance.win;
@@ -2652,9 +2649,16 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
     return ferror(f) ? -1 : 0;
 }
 
+/* The long gaps in motion lose HX_NAV_GAP_LOST_FRACTION of it (the gap
+ * note; with the time-jump note, hx_nav_gappy). */
+static int gaps_lose_motion(const hx_nav_summary_t *s)
+{
+    return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
+}
+
 int hx_nav_gappy(const hx_nav_summary_t *s)
 {
-    return (s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s) || s->motion_jumps > 0;
+    return gaps_lose_motion(s) || s->motion_jumps > 0;
 }
 
 int hx_nav_strides_too_short(const hx_nav_summary_t *s)
@@ -2872,7 +2876,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "\"replay\")\n",
                 s->motion_jumps, s->motion_jumps == 1 ? "" : "s", s->jump_lost_s, 1e3 * t->max_gap_s);
     }
-    if (s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s) {
+    if (gaps_lose_motion(s)) {
         fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "
                    "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
                    "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",

@@ -245,57 +245,51 @@ expect_out "^note              1 time jump while the foot moved (0.50[0-9] s los
     "a time jump in motion is noted as lost motion"
 json "$T/drop.json" "j['motion_gaps']['jumps_in_motion'] == 1 and j['motion_gaps']['unreliable'] is True and abs(j['motion_gaps']['jump_lost_s'] - 0.5) < 0.01" \
     && pass "drop JSON: one jump in motion, 0.5 s, unreliable" || fail "drop JSON: $(grep -A9 motion_gaps "$T/drop.json" | tr -d '\n ')"
+strides_of_out() { sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out"; }
 expect_exit 0 "the intact walk" "$H" replay "$T/walk_full.csv"
 if grep -q "time jump while the foot moved" "$T/out"; then fail "the intact walk noted a time jump"; else pass "the intact walk: no time-jump note"; fi
+strides_full=$(strides_of_out)
 # a burst of stamps at the start (a logger's buffer flushed at power-on:
-# the first 40 stamps 1 ms apart) set the detector's rate from its first 32
+# the first N stamps 1 ms apart) set the detector's rate from its first 32
 # intervals (1000 Hz: a 200 Hz walk counted 2 strides of 46); the reader's
-# rate (the first 4,096) is taken instead, and said
-/usr/bin/python3 - "$T/walk_full.csv" "$T/walk_burst.csv" <<'PY' || fail "writing walk_burst.csv"
+# rate (the first 4,096) is taken instead, and said. burst_walk N GAP OUT:
+# the walk with N burst stamps, and 1 s added from sample GAP on (0: none)
+burst_walk() {
+    /usr/bin/python3 - "$T/walk_full.csv" "$1" "$2" "$3" <<'PY' || fail "writing $3"
 import sys
 rows = open(sys.argv[1]).read().splitlines()
-t40 = float(rows[41].split(',')[0])
+n, gap = int(sys.argv[2]), int(sys.argv[3])
+tn = float(rows[n + 1].split(',')[0])
 out = [rows[0]]
 for i, r in enumerate(rows[1:]):
     v = r.split(',')
-    if i < 40:
-        v[0] = '%.9f' % (t40 - (40 - i) * 0.001)
+    t = float(v[0])
+    if i < n:
+        t = tn - (n - i) * 0.001
+    elif gap > 0 and i >= gap:
+        t += 1.0
+    v[0] = '%.9f' % t
     out.append(','.join(v))
-open(sys.argv[2], 'w').write('\n'.join(out) + '\n')
+open(sys.argv[4], 'w').write('\n'.join(out) + '\n')
 PY
-expect_exit 0 "replay walk.bin, its rate" "$H" replay "$T/walk_full.csv"
-strides_full=$(sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out")
+}
+burst_walk 40 0 "$T/walk_burst.csv"
 expect_exit 0 "a burst of stamps at the start" "$H" replay "$T/walk_burst.csv"
 expect_err "walk_burst.csv: the first 32 intervals give 1000 Hz, the first 4,096 398.[0-9]* Hz (a burst of stamps at the start" \
     "the start burst said"
 expect_out_re "^rate +398\.[0-9] Hz \(from the time stamps of the first 4,096 samples: 1 / their median interval; the detector's first intervals give 1000 Hz\)" \
     "the rate line names the reader's rate"
-strides_burst=$(sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out")
+strides_burst=$(strides_of_out)
 if [ -n "$strides_full" ] && [ "$strides_burst" = "$strides_full" ]; then pass "start burst: $strides_burst strides as the walk"
 else fail "start burst: $strides_burst strides, the walk $strides_full"; fi
 # a larger burst (400 stamps, a logger's buffer) and a 1 s dropout early in
 # the log: the check of the reader's rate against the stamps' span looks
 # past both (over the whole span they moved it 6 %, and the detector kept
 # 1000 Hz: 14 strides of 16)
-/usr/bin/python3 - "$T/walk_full.csv" "$T/walk_burst400.csv" <<'PY' || fail "writing walk_burst400.csv"
-import sys
-rows = open(sys.argv[1]).read().splitlines()
-t400 = float(rows[401].split(',')[0])
-out = [rows[0]]
-for i, r in enumerate(rows[1:]):
-    v = r.split(',')
-    t = float(v[0])
-    if i < 400:
-        t = t400 - (400 - i) * 0.001
-    elif i >= 2000:
-        t += 1.0
-    v[0] = '%.9f' % t
-    out.append(','.join(v))
-open(sys.argv[2], 'w').write('\n'.join(out) + '\n')
-PY
+burst_walk 400 2000 "$T/walk_burst400.csv"
 expect_exit 0 "a burst of 400 stamps and an early dropout" "$H" replay "$T/walk_burst400.csv"
 expect_err "walk_burst400.csv: the first 32 intervals give 1000 Hz, the first 4,096 398.[0-9]* Hz" "the larger burst said"
-strides_b400=$(sed -n 's/^stance  *\([0-9]*\) strides.*/\1/p' "$T/out")
+strides_b400=$(strides_of_out)
 if [ "$strides_b400" = "$strides_full" ]; then pass "400-stamp burst: $strides_b400 strides as the walk"
 else fail "400-stamp burst: $strides_b400 strides, the walk $strides_full"; fi
 # stamps in whole milliseconds read as seconds (2 and 3 "s" apart: too
