@@ -126,6 +126,7 @@ struct hx_reader {
     int eof;
     int gz_cut;                 /* the gzip data ended early (a truncated .bin.gz) */
     long record_slot;           /* index of the next record slot */
+    int temp_unflagged;         /* a record's temperature under a header without the flag was said */
 };
 
 static void set_err(hx_reader_t *r, const char *fmt, ...)
@@ -874,21 +875,37 @@ int hx_cr_alone(const char *line)
     return 0;
 }
 
+char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul)
+{
+    const z_off_t before = gztell(gz);
+    z_off_t after;
+    *len = 0;
+    *nul = 0;
+    if (gzgets(gz, buf, size) == NULL) {
+        return NULL;
+    }
+    *len = strlen(buf);
+    after = gztell(gz);
+    /* gzgets stops only at a newline, a full buffer or the end of the
+     * file, and copies a NUL byte like any other: the string then ends
+     * before the bytes read do */
+    *nul = before >= 0 && after >= 0 && (size_t)(after - before) != *len;
+    return buf;
+}
+
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
 static int read_line(hx_reader_t *r)
 {
     size_t n;
-    if (gzgets(r->gz, r->line, (int)sizeof r->line) == NULL) {
+    int nul;
+    if (hx_gzgets(r->gz, r->line, (int)sizeof r->line, &n, &nul) == NULL) {
         return gz_failed(r, r->stats.lines + 1) ? -1 : 0;
     }
     r->stats.lines++;
-    n = strlen(r->line);
     if (n > 0 && r->line[n - 1] != '\n' && gzeof(r->gz) && gz_failed(r, r->stats.lines)) {
         return -1; /* the last text before a truncated gzip stream's end */
     }
-    /* gzgets stops only at a newline, a full buffer or the end of the
-     * file: a line shorter than that was cut by a NUL byte in the data */
-    if (n == 0 || (n < sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz))) {
+    if (nul) {
         set_err(r, "%s:%ld: " HX_NUL_TEXT, r->path,
                 r->stats.lines);
         return -1;
@@ -3129,8 +3146,16 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
             r->prev_t_ns = rec.t_ns;
             s->t_ns = rec.t_ns;
             s->seq = rec.seq;
+            if ((rec.flags & HX_BIN_REC_TEMP) && !r->meta.has_temp && !r->temp_unflagged) {
+                /* the header decides the columns (convert writes none):
+                 * said once, not dropped silently */
+                r->temp_unflagged = 1;
+                add_warn(r, "%s: record #%ld carries a temperature but the header's flags say the log has none "
+                            "(a writer's fault?): the temperatures are not read",
+                         r->path, r->record_slot - 1);
+            }
             s->flags = (r->meta.has_seq ? FNAV_SAMPLE_HAS_SEQ : 0u) |
-                       ((rec.flags & HX_BIN_REC_TEMP) ? FNAV_SAMPLE_HAS_TEMP : 0u);
+                       ((rec.flags & HX_BIN_REC_TEMP) && r->meta.has_temp ? FNAV_SAMPLE_HAS_TEMP : 0u);
             s->accel_mps2[0] = (fnav_real_t)rec.acc[0];
             s->accel_mps2[1] = (fnav_real_t)rec.acc[1];
             s->accel_mps2[2] = (fnav_real_t)rec.acc[2];

@@ -17,6 +17,7 @@
 #define HX_LOG_H
 
 #include <stdio.h>
+#include <zlib.h>
 #include "footnav/fnav_types.h"
 #include "footnav/fnav_stance.h"
 #include "hx_names.h"
@@ -358,6 +359,11 @@ int hx_named_fields(char **f, int n, int total);
 /** 1 when a line holds a carriage return before more text: lines ending in
  *  a CR alone (classic Mac OS), read as one; HX_CR_ALONE_HINT says so. */
 int hx_cr_alone(const char *line);
+/** gzgets into buf (size bytes), its length in *len; *nul 1 when the bytes
+ *  read (gztell) outrun the string: a NUL byte cut it, wherever it is (a
+ *  last line without a newline too, which gzgets ends at the file's end).
+ *  NULL at the end or on an error, as gzgets. */
+char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul);
 #define HX_CR_ALONE_HINT                                                                                      \
     " (its lines end in a carriage return alone, the old Mac OS convention: convert them, e.g. tr '\\r' '\\n')"
 

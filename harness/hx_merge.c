@@ -173,14 +173,12 @@ typedef struct {
 static int next_line(text_t *t, const char *path, char *msg, size_t size)
 {
     size_t len;
-    if (gzgets(t->gz, t->line, (int)sizeof t->line) == NULL) {
+    int nul;
+    if (hx_gzgets(t->gz, t->line, (int)sizeof t->line, &len, &nul) == NULL) {
         return 0;
     }
     t->lineno++;
-    len = strlen(t->line);
-    /* gzgets stops only at a newline, a full buffer or the end: a line
-     * shorter than that was cut by a NUL byte (a logger's unwritten block) */
-    if (len == 0 || (len < sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz))) {
+    if (nul) {
         say(msg, size, "%s:%ld: " HX_NUL_TEXT, path,
             t->lineno);
         return -1;

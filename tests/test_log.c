@@ -411,6 +411,18 @@ static void test_bin_header_fields(void **state)
         assert_int_equal(r.n, 6);
         assert_int_equal(*(const int *)(const void *)((const char *)&m + k_flags[i].off), 0);
         assert_int_equal(m.rate_nominal + m.has_temp + m.has_seq, 2);
+        if (k_flags[i].bit == HX_BIN_FLAG_TEMP) {
+            /* the records still flag their temperatures: not read, as the
+             * header says (convert writes no column), but said, not
+             * dropped silently */
+            assert_int_equal(r.s[2].flags & FNAV_SAMPLE_HAS_TEMP, 0);
+            if (strstr(r.warn, "record #0 carries a temperature but the header's flags say the log has none") ==
+                NULL) {
+                fail_msg("no warning for the unflagged temperatures: '%s'", r.warn);
+            }
+        } else {
+            assert_null(strstr(r.warn, "temperature"));
+        }
         unlink(p);
     }
 }

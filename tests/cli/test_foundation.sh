@@ -293,6 +293,14 @@ if cmp -s "$T/a.csv" "$T/c.csv"; then pass "convert left its input intact"; else
 { head -200 "$T/a.csv"; head -c 600 /dev/zero; echo; sed -n 201,400p "$T/a.csv"; } > "$T/nul.csv"
 expect_exit 1 "a NUL block inside a CSV" "$H" info "$T/nul.csv"
 expect_err "nul.csv:201: a NUL byte" "the NUL block is reported with its line"
+# a NUL in a last line without a newline (gzgets ends it at the file's end,
+# not the NUL: it was read as a cut line, "4 columns, expected at least 7")
+{ head -200 "$T/a.csv"; sed -n 201p "$T/a.csv" | cut -c1-20 | tr -d '\n'; head -c 40 /dev/zero; } > "$T/nulend.csv"
+expect_exit 1 "a NUL block in a last line without a newline" "$H" info "$T/nulend.csv"
+expect_err "nulend.csv:201: a NUL byte" "the NUL in the last line is named, not read as a cut line"
+gzip -c "$T/nulend.csv" > "$T/nulend.csv.gz"
+expect_exit 1 "the same, gzip-compressed" "$H" info "$T/nulend.csv.gz"
+expect_err "nulend.csv.gz:201: a NUL byte" "the NUL in a compressed last line is named"
 expect_exit 0 "convert to stdout" "$H" convert vectors/walk.bin -
 if [ "$(wc -l <"$T/out")" -eq 16540 ]; then pass "stdout has header + 16539 rows"; else fail "stdout rows"; fi
 

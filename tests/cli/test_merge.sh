@@ -347,6 +347,7 @@ i = s.index('\n' + lines[101].split(',')[0] + ',')   # the row of line 102
 j = s.index('\n', i + 1)
 b[j - 2:j + 198] = b'\0' * 200                        # its last value's end and the rows after it zeroed
 open(T + '/a_nul.csv', 'wb').write(bytes(b))
+open(T + '/a_nulend.csv', 'wb').write(s[:s.index(lines[299])].encode() + lines[299][:8].encode() + b'\0' * 40)
 f = lines[61].split(',')
 f[1] = f[1][:4] + ',' + f[1][4:]                      # a stray delimiter in row 61's first value
 open(T + '/a_split.csv', 'w').write('\n'.join(lines[:61] + [','.join(f)] + lines[62:]))
@@ -363,6 +364,8 @@ PY
 expect_exit 1 "merge: a NUL block in the accelerometer's file" "$H" merge "$T/a_nul.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_err "a_nul.csv:102: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks) (the 100 samples before it are merged)" \
     "merge: the NUL block refused at its line, the samples before it merged"
+expect_exit 1 "merge: a NUL block in a last line without a newline" "$H" merge "$T/a_nulend.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "a_nulend.csv:300: a NUL byte in the text" "merge: the NUL in the last line named, not read as a cut line"
 expect_exit 0 "merge: a stray delimiter in a row" "$H" merge "$T/a_split.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_err "a_split.csv:62: 1 row with more fields than the header's 4 (the first here): where a stray delimiter split a field" \
     "merge: the row with more fields than the header warned"
