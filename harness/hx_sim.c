@@ -745,6 +745,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
          * 12 m/s^2 of aliasing into a run's samples). Unchanged at the
          * defaults (impacts 5-8 ms, no vibration) */
         const hx_gait_t *gs[5];
+        const char *why = "impacts shorter than 2.5 ms";
         double need = 0.0;
         gs[0] = &s->motion_cfg.walk;
         gs[1] = &s->motion_cfg.run;
@@ -758,6 +759,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             const double f = (double)s->err.vibration.freq_hz[i];
             if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) != 0u && 2.5 * f > need) {
                 need = 2.5 * f;
+                why = "the vibration tone";
             }
         }
         if (s->decim == HX_DECIM_MEAN && need < 2.0 * rate) {
@@ -765,7 +767,19 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         }
         v = ceil(need / rate - 1e-9);
         if (v > (double)s->err.oversample) {
+            const uint32_t was = s->err.oversample;
             s->err.oversample = v > 1024.0 ? 1024u : (uint32_t)v;
+            if (s->err.oversample >= 4u * was) {
+                /* the cost grows with it: said (the "internal xN" line
+                 * alone did not say why a run took 10 times as long) */
+                char note[256];
+                snprintf(note, sizeof note,
+                         "note: the internal rate is raised to %g Hz (x%u, the default x%u) for %s: the run takes "
+                         "about %.0f times as long (--oversample sets it)\n",
+                         rate * s->err.oversample, (unsigned)s->err.oversample, (unsigned)was, why,
+                         (double)s->err.oversample / (double)was);
+                hx_print_warnings(cmd, note);
+            }
         }
     }
     {

@@ -119,8 +119,12 @@ expect_err "point samples (--oversample 1) fold it to 10 Hz" "point sampling's f
 # landing: 0.5 ms at 200 Hz, x50); the defaults (5-8 ms) keep x10
 expect_exit 0 "0.5 ms impacts" "$H" sim --out "$T/imp.csv" --motion run --duration 2 --impact-ms 0.5
 expect_out "internal x50" "0.5 ms impacts sampled at 10 kHz inside"
+expect_err "note: the internal rate is raised to 10000 Hz (x50, the default x10) for impacts shorter than 2.5 ms: the run takes about 5 times as long (--oversample sets it)" \
+    "the raise's cost said (the internal xN line alone did not say why)"
 expect_exit 0 "default impacts" "$H" sim --out "$T/imp.csv" --motion run --duration 2
 expect_out "internal x10" "the default internal rate at the default impacts"
+if grep -q "internal rate is raised" "$T/err"; then fail "a note at the default internal rate"
+else pass "no note at the default internal rate"; fi
 # alias point-samples: --decimation mean and --oversample are said to be
 # set aside (montecarlo then tells its filter the samples are instantaneous)
 expect_exit 0 "alias with interval means" "$H" sim --out "$T/al.csv" --duration 1 --decimation mean --effect alias
