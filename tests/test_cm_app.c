@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "fnav_cm_app.h"
+#include "hx_log.h"
 
 /* ---- the test board ---- */
 
@@ -20,7 +21,8 @@ static int g_imu_absent;
 static long g_imu_fifo;               /* samples left in the fake IMU's FIFO (-1: endless) */
 static int g_imu_still;               /* a sensor lying still (the filter aligns) */
 static int64_t g_period_ns;           /* sample interval of the fake IMU's stamps */
-static uint8_t g_link[1 << 17];       /* everything sent */
+static uint8_t g_link[1 << 19];       /* everything sent */
+static const hx_log_t *g_walk;        /* the IMU plays this log (NULL: the made-up samples) */
 static size_t g_link_n;
 static int g_busy_every;              /* refuse every N-th frame (0: never) */
 static int g_writes;
@@ -30,6 +32,17 @@ static fnav_sample_t make_sample(uint32_t k)
     fnav_sample_t s;
     int i;
     memset(&s, 0, sizeof s);
+    if (g_walk != NULL) {
+        const size_t j = k < g_walk->n ? k : g_walk->n - 1u;
+        s.t_ns = g_walk->t_ns[j] - g_walk->t_ns[0];
+        s.seq = k;
+        s.flags = FNAV_SAMPLE_HAS_SEQ;
+        for (i = 0; i < 3; i++) {
+            s.accel_mps2[i] = (fnav_real_t)g_walk->acc[j][i];
+            s.gyro_rps[i] = (fnav_real_t)g_walk->gyr[j][i];
+        }
+        return s;
+    }
     s.t_ns = (int64_t)k * g_period_ns;
     s.seq = k;
     s.flags = FNAV_SAMPLE_HAS_SEQ;
@@ -75,6 +88,7 @@ int fnav_cm_out_write(const void *bytes, uint32_t n)
 static void reset_board(void)
 {
     g_imu_next = 0;
+    g_walk = NULL;
     g_imu_absent = 0;
     g_imu_fifo = -1;
     g_imu_still = 0;
@@ -250,6 +264,85 @@ static void test_every_frame_is_output(void **state)
     assert_int_equal(rx.by_type[FNAV_WIRE_NAV], n_ref / cfg.nav_every);
 }
 
+/* NAV frames every nav_every-th output keep the events of the others: a
+ * stride or a ZUPT marks a single output, and the frames between two sent
+ * took theirs with them (the bundled walk's 16 strides: 6 received at the
+ * default N = 4, 1 at N = 40; the firmware audit). Against the navigator
+ * driven directly: every stride is received, and a sent frame carries a
+ * ZUPT exactly when one of the outputs since the last sent had one. */
+static void test_events_of_unsent_frames(void **state)
+{
+    static fnav_cm_app_t app;
+    static fnav_cm_est_t ref;
+    static rx_t rx;
+    static uint8_t ref_flags[20000];
+    static const uint32_t every[2] = { 4u, 40u };
+    hx_log_t log;
+    char err[256];
+    fnav_nav_frame_t fr;
+    uint32_t i, n_ref = 0, strides = 0, e;
+    (void)state;
+    if (!(fnav_cm_est_built() & 1u)) {
+        skip();
+    }
+    assert_int_equal(hx_log_load(&log, "vectors/walk.bin", HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.n < sizeof ref_flags);
+    reset_board();
+    g_walk = &log;
+    assert_int_equal(fnav_cm_est_init(&ref, FNAV_R(400.0), FNAV_R(0.0)), FNAV_OK);
+    for (i = 0; i < (uint32_t)log.n; i++) {
+        fnav_sample_t s = make_sample(i);
+        assert_int_equal(fnav_nav_push(&ref.nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&ref.nav, &fr) == FNAV_OK) {
+            ref_flags[n_ref++] = (uint8_t)fr.flags;
+            strides += (fr.flags & FNAV_FRAME_STRIDE) ? 1u : 0u;
+        }
+    }
+    assert_true(strides >= 10u); /* the case: a walk's strides */
+    for (e = 0; e < 2; e++) {
+        fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+        uint32_t want_zupt = 0, got_zupt = 0, got_stride = 0, k;
+        size_t pos = 0;
+        reset_board();
+        g_walk = &log;
+        cfg.nav_every = every[e];
+        cfg.status_every = 0u;
+        assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+        for (i = 0; i < (uint32_t)log.n; i++) {
+            fnav_cm_sample_isr(&app.port_ctx);
+            (void)fnav_cm_app_poll(&app);
+        }
+        assert_int_equal(app.nav_outputs, n_ref);
+        for (k = 0; k + every[e] <= n_ref; k += every[e]) {
+            uint32_t j, z = 0;
+            for (j = k; j < k + every[e]; j++) {
+                z |= ref_flags[j] & FNAV_FRAME_ZUPT;
+            }
+            want_zupt += z != 0u;
+        }
+        fnav_wire_decoder_init(&rx.dec);
+        for (;;) {
+            size_t used;
+            fnav_wire_frame_t f;
+            fnav_wire_nav_t nav;
+            if (fnav_wire_decode(&rx.dec, g_link + pos, g_link_n - pos, &used, &f) != FNAV_OK) {
+                break;
+            }
+            pos += used;
+            if (f.type != FNAV_WIRE_NAV) {
+                continue;
+            }
+            assert_int_equal(fnav_wire_parse_nav(&f, &nav), FNAV_OK);
+            got_zupt += (nav.flags & FNAV_FRAME_ZUPT) ? 1u : 0u;
+            got_stride += (nav.flags & FNAV_FRAME_STRIDE) ? 1u : 0u;
+        }
+        assert_int_equal(pos, g_link_n);
+        assert_int_equal(got_stride, strides);
+        assert_int_equal(got_zupt, want_zupt);
+    }
+    hx_log_free(&log);
+}
+
 /* Every second sample echoed: the INFO frame announces the SAMPLE stream's
  * own rate (200 Hz) and no sensor counter, whose steps of 2 a receiver
  * would take for 1,999 lost samples in 4,000. */
@@ -385,6 +478,7 @@ int main(void)
         cmocka_unit_test(test_isr_to_frames),
         cmocka_unit_test(test_sample_every_info),
         cmocka_unit_test(test_every_frame_is_output),
+        cmocka_unit_test(test_events_of_unsent_frames),
         cmocka_unit_test(test_ring_overrun),
         cmocka_unit_test(test_isr_fifo),
         cmocka_unit_test(test_busy_link),

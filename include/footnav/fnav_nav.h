@@ -61,7 +61,9 @@
  * stance.min_zupt_cycle 0 (the scaling off) lag = n_min_zupt - 1:
  * 5 samples (25 ms) at 200 Hz with the 20 ms run (h 2, lag 3). When the rate
  * is estimated (rate_hz = 0) the first frame waits for 33 samples (the
- * median of 32 intervals) or for its latency h + lag, whichever is later:
+ * median of 32 intervals; FNAV_STANCE_MAX_WINDOW samples, the window less
+ * one, where that is shorter: 24 with the reference firmware's options)
+ * or for its latency h + lag, whichever is later:
  * with the defaults the 33rd sample at 200 Hz, the 35th at 400 Hz, the 63rd
  * at 820 Hz (test_nav test_first_frames). Each frame carries its own
  * sample's time.

@@ -74,14 +74,18 @@ typedef struct {
      *  (non-blocking sources), or a negative status on an error. */
     fnav_status_t (*read_sample)(void *ctx, fnav_sample_t *sample);
 
-    /** Monotonic clock, ns; used for timing and timeouts, never for the
-     *  samples' own time (that comes with each sample). */
+    /** Monotonic clock, ns, for the application (fnav_port_now_ns; the
+     *  reference firmware's STATUS uptime), never for the samples' own
+     *  time (that comes with each sample). The core itself does not call
+     *  it: it has no timeouts. */
     int64_t (*now_ns)(void *ctx);
 
     /** Output sink for navigation frames. */
     fnav_status_t (*write_nav)(void *ctx, const fnav_nav_frame_t *frame);
 
-    /** Log hook: one line of text without a trailing newline. */
+    /** Log hook for the application (fnav_port_log): one line of text
+     *  without a trailing newline. The core itself logs nothing: its
+     *  outcomes are status codes and counters. */
     void (*log)(void *ctx, fnav_log_level_t level, const char *msg);
 } fnav_port_t;
 

@@ -2,6 +2,7 @@
 #include "fnav_cm_app.h"
 #include "fnav_cm_prof.h"
 #include "footnav/fnav_math.h"
+#include "footnav/fnav_nav.h" /* FNAV_FRAME_STRIDE (the frame bits, whatever estimators are built) */
 
 const fnav_cm_app_config_t fnav_cm_app_config_default = {
     FNAV_R(400.0), /* rate_hz */
@@ -30,6 +31,7 @@ fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *c
     }
     app->samples = 0u;
     app->nav_outputs = 0u;
+    app->events = 0u;
     app->est_errors = 0u;
     app->last_error = FNAV_OK;
     return FNAV_OK;
@@ -80,7 +82,13 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
      * (a sample can release several together) */
     while (st == FNAV_OK) {
         app->nav_outputs++;
+        /* the events of the frames not sent ride on the next one sent: a
+         * stride or a ZUPT marks one frame, and every nav_every-th frame
+         * alone carried 6 of the bundled walk's 16 strides at N = 4 */
+        app->events |= app->frame.flags & (FNAV_FRAME_ZUPT | FNAV_FRAME_STRIDE);
         if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {
+            app->frame.flags |= app->events;
+            app->events = 0u;
             FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_TX_NAV);
             if (fnav_port_write_nav(&app->port, &app->frame) != FNAV_OK) {
                 /* link busy: counted in port_ctx.tx_dropped, the receiver sees the seq gap */

@@ -21,7 +21,9 @@ typedef struct {
                                   log, so the sensor computes what a replay of its recording computes */
     uint32_t nav_every;      /**< send a NAV frame every N navigation outputs (0: none; default 4); the
                                   navigator has no output while it aligns, so the count starts at its
-                                  first output, not at the first sample */
+                                  first output, not at the first sample. A sent frame's event bits
+                                  (FNAV_FRAME_ZUPT, FNAV_FRAME_STRIDE) tell the events of the outputs
+                                  since the last frame sent, its own included */
     uint32_t sample_every;   /**< send every N-th raw sample as a SAMPLE frame (0: none; default 0) */
     uint32_t status_every;   /**< send a STATUS frame every N samples (0: none; default 400) */
     const char *sensor;      /**< sensor name for the INFO frame (default "footnav-fw") */
@@ -39,6 +41,7 @@ typedef struct {
     fnav_nav_frame_t frame;     /**< last navigation output */
     uint32_t samples;           /**< samples processed */
     uint32_t nav_outputs;       /**< navigation outputs produced */
+    uint32_t events;            /**< event bits of the outputs not sent yet (nav_every) */
     uint32_t est_errors;        /**< estimator failures (data errors; the state stays usable) */
     fnav_status_t last_error;   /**< status of the last failure */
 } fnav_cm_app_t;

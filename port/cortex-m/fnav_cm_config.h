@@ -54,7 +54,9 @@
 #define FNAV_CM_SAMPLE_IRQN 0
 #endif
 
-/** External interrupts in the vector table (a generic Cortex-M4F part). */
+/** External interrupts in the vector table: 32 for a generic Cortex-M4F
+ *  part; a multiple of 32 up to 256 that covers every interrupt the board
+ *  enables (an STM32F4's EXTI15_10 is 40, USART6 71: 96). */
 #ifndef FNAV_CM_IRQ_COUNT
 #define FNAV_CM_IRQ_COUNT 32
 #endif

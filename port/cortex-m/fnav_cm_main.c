@@ -25,6 +25,10 @@ int main(void)
             fnav_cm_idle(); /* a bad build-time configuration: nothing to run */
         }
     }
+    /* the board sets the clocks, starts the time base
+     * (fnav_cm_systick_start(core_hz), unless it has its own
+     * fnav_cm_ticks_ns: only it knows the core clock) and enables the
+     * sample-ready interrupt (docs/firmware.md, "Board hooks") */
     fnav_cm_board_init();
     (void)fnav_cm_app_announce(&g_app);
     for (;;) {

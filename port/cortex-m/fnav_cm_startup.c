@@ -11,7 +11,7 @@ extern uint32_t _sdata[];  /* .data in RAM */
 extern uint32_t _edata[];
 extern uint32_t _sbss[];
 extern uint32_t _ebss[];
-extern uint32_t _estack[]; /* initial stack pointer: the top of the stack reserve the linker script places after .bss */
+extern uint32_t _estack[]; /* initial stack pointer: the top of the stack reserve the linker script places at the bottom of RAM */
 
 int main(void);
 void Reset_Handler(void);
@@ -36,17 +36,23 @@ FNAV_CM_HANDLER(FNAV_CM_Sample_IRQHandler);
  * the default handler elsewhere. */
 #define IRQ(n) (((n) == FNAV_CM_SAMPLE_IRQN) ? FNAV_CM_Sample_IRQHandler : fnav_cm_default_handler)
 
+/* Eight and 32 external interrupts from n. */
+#define IRQ8(n) IRQ(n), IRQ((n) + 1), IRQ((n) + 2), IRQ((n) + 3), IRQ((n) + 4), IRQ((n) + 5), IRQ((n) + 6), IRQ((n) + 7)
+#define IRQ32(n) IRQ8(n), IRQ8((n) + 8), IRQ8((n) + 16), IRQ8((n) + 24)
+
 /* The vector table: initial stack pointer, then 15 system exceptions and
- * 32 external interrupts (ARMv7-M ARM, B1.5.3; a part with more interrupts
- * extends the list). A struct keeps the stack pointer (data) apart from the
- * handlers (code) in ISO C. */
+ * FNAV_CM_IRQ_COUNT external interrupts (ARMv7-M ARM, B1.5.3), a multiple
+ * of 32 up to 256: a part with more interrupts than 32 (an STM32F4's 82:
+ * 96) sets it, or the vector of an interrupt it enables beyond the table
+ * is read from the code after it. A struct keeps the stack pointer (data)
+ * apart from the handlers (code) in ISO C. */
 typedef struct {
     uint32_t *stack_top;
     void (*handler[15 + FNAV_CM_IRQ_COUNT])(void);
 } fnav_cm_vectors_t;
 
-#if FNAV_CM_IRQ_COUNT != 32
-#error "fnav_cm_startup.c lists 32 external interrupts: extend the table for FNAV_CM_IRQ_COUNT"
+#if FNAV_CM_IRQ_COUNT % 32 != 0 || FNAV_CM_IRQ_COUNT < 32 || FNAV_CM_IRQ_COUNT > 256
+#error "FNAV_CM_IRQ_COUNT must be a multiple of 32 from 32 to 256 (fnav_cm_startup.c lists them in blocks of 32)"
 #endif
 
 __attribute__((section(".isr_vector"), used)) const fnav_cm_vectors_t fnav_cm_vectors = {
@@ -54,10 +60,28 @@ __attribute__((section(".isr_vector"), used)) const fnav_cm_vectors_t fnav_cm_ve
     {
         Reset_Handler, NMI_Handler, HardFault_Handler, MemManage_Handler, BusFault_Handler,
         UsageFault_Handler, 0, 0, 0, 0, SVC_Handler, DebugMon_Handler, 0, PendSV_Handler, SysTick_Handler,
-        IRQ(0), IRQ(1), IRQ(2), IRQ(3), IRQ(4), IRQ(5), IRQ(6), IRQ(7),
-        IRQ(8), IRQ(9), IRQ(10), IRQ(11), IRQ(12), IRQ(13), IRQ(14), IRQ(15),
-        IRQ(16), IRQ(17), IRQ(18), IRQ(19), IRQ(20), IRQ(21), IRQ(22), IRQ(23),
-        IRQ(24), IRQ(25), IRQ(26), IRQ(27), IRQ(28), IRQ(29), IRQ(30), IRQ(31),
+        IRQ32(0)
+#if FNAV_CM_IRQ_COUNT > 32
+        , IRQ32(32)
+#endif
+#if FNAV_CM_IRQ_COUNT > 64
+        , IRQ32(64)
+#endif
+#if FNAV_CM_IRQ_COUNT > 96
+        , IRQ32(96)
+#endif
+#if FNAV_CM_IRQ_COUNT > 128
+        , IRQ32(128)
+#endif
+#if FNAV_CM_IRQ_COUNT > 160
+        , IRQ32(160)
+#endif
+#if FNAV_CM_IRQ_COUNT > 192
+        , IRQ32(192)
+#endif
+#if FNAV_CM_IRQ_COUNT > 224
+        , IRQ32(224)
+#endif
     },
 };
 

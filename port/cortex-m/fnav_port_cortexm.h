@@ -8,8 +8,10 @@
  *
  * Hardware specifics are weak functions with default stubs, so the port
  * links for a generic Cortex-M4F; a board overrides them with strong ones:
- *   - fnav_cm_board_init(): clocks, pins, IMU set-up, enabling the
- *     sample-ready interrupt (default: nothing),
+ *   - fnav_cm_board_init(): clocks, pins, IMU set-up, starting the time
+ *     base (fnav_cm_systick_start(core_hz), unless the board has its own
+ *     fnav_cm_ticks_ns()), enabling the sample-ready interrupt (default:
+ *     nothing),
  *   - fnav_cm_imu_read(): read one sample from the IMU, e.g. over SPI
  *     (default: no IMU, returns -1),
  *   - fnav_cm_ticks_ns(): a monotonic time base (default: the SysTick time
@@ -80,11 +82,14 @@ void fnav_cm_systick_start(uint32_t core_hz);
 void fnav_cm_systick_tick(void);
 
 /* Weak hardware hooks (override in the board support code). */
-/** Board set-up; called once by the reference main() before the loop. */
+/** Board set-up; called once by the reference main() before the loop.
+ *  Starts the time base: the reference main() does not, as only the board
+ *  knows the core clock (fnav_cm_ticks_ns() reads 0 until then). */
 void fnav_cm_board_init(void);
 /** Read one sample (fill every field, t_ns included: int64 ns, never going
  *  back; fnav_cm_time.h converts a wrapping timer or a FIFO batch's one
- *  stamp). 0 ok, -1 none. ISR context: must not block. Called once per
+ *  stamp). 0 ok, -1 none. ISR context: must not block; acknowledges the
+ *  sample-ready interrupt (its pending flag), or the handler runs again. Called once per
  *  sample-ready interrupt by fnav_cm_sample_isr, or until it returns -1 by
  *  fnav_cm_sample_isr_fifo. */
 int fnav_cm_imu_read(fnav_sample_t *s);

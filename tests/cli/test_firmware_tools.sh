@@ -153,6 +153,39 @@ mkdir -p "$T/noci"
 if [ "$rc" -eq 1 ]; then pass "stack_usage.py: an unknown root fails (exit 1)"; else fail "stack_usage.py unknown root: exit $rc"; fi
 expect_err "fnav_nav_step: not found" "stack_usage.py: the unknown root named"
 
+# The linker script's layout: the stack reserve at the bottom of RAM, .data
+# and .bss above it, so an overflow writes below RAM and faults (it sat
+# right after .bss, whose last object, the application, an overflow
+# overwrote without a fault: the firmware audit)
+sym() { arm-none-eabi-nm "$T/plain.elf" | awk -v s="$1" '$3 == s { print $1 }'; }
+if [ "$(sym _sstack)" = "20000000" ] && [ -n "$(sym _sdata)" ] &&
+    [ "$((0x$(sym _sdata)))" -ge "$((0x$(sym _estack)))" ]; then
+    pass "the stack reserve at the bottom of RAM (_sstack $(sym _sstack), _estack $(sym _estack), _sdata $(sym _sdata))"
+else
+    fail "the stack reserve not at the bottom of RAM: _sstack $(sym _sstack), _estack $(sym _estack), _sdata $(sym _sdata)"
+fi
+
+# The vector table's external interrupts: FNAV_CM_IRQ_COUNT of them (a
+# part with more than 32 sets it; an enabled interrupt beyond the table
+# read its vector from the code after it), the sample handler at
+# FNAV_CM_SAMPLE_IRQN, refused unless a multiple of 32
+if $CC $ARCH -Os -std=c99 -Iinclude -Iport/cortex-m -DFNAV_CM_IRQ_COUNT=96 -DFNAV_CM_SAMPLE_IRQN=40 \
+    -c port/cortex-m/fnav_cm_startup.c -o "$T/vec.o" 2>"$T/err"; then
+    n=$(arm-none-eabi-size -A "$T/vec.o" | awk '$1 == ".isr_vector" { print $2 }')
+    if [ "$n" = "448" ]; then pass "96 external interrupts: a table of 448 bytes (4 x (1 + 15 + 96))"
+    else fail "96 external interrupts: the table has $n bytes, not 448"; fi
+    at=$(arm-none-eabi-objdump -r -j .isr_vector "$T/vec.o" | awk '$3 == "FNAV_CM_Sample_IRQHandler" { print $1 }')
+    if [ "$at" = "000000e0" ]; then pass "the sample handler at external interrupt 40 (byte 224)"
+    else fail "the sample handler at byte 0x$at, not 0xe0 (interrupt 40)"; fi
+else
+    fail "fnav_cm_startup.c does not build with 96 interrupts: $(cat "$T/err")"
+fi
+if $CC $ARCH -Os -std=c99 -Iinclude -Iport/cortex-m -DFNAV_CM_IRQ_COUNT=40 \
+    -c port/cortex-m/fnav_cm_startup.c -o "$T/vec.o" 2>"$T/err"; then
+    fail "FNAV_CM_IRQ_COUNT=40 built: the table would not hold it"
+elif grep -q "multiple of 32" "$T/err"; then pass "FNAV_CM_IRQ_COUNT=40 refused at compile time"
+else fail "FNAV_CM_IRQ_COUNT=40: $(cat "$T/err")"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_firmware_tools.sh: $fails failure(s)"
     exit 1
