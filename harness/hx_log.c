@@ -118,6 +118,8 @@ struct hx_reader {
     double gx2_prev_host;
     double gx2_prev_nr;
     long gx2_bridged;
+    long gx2_nr_back;           /* packets whose Nr is not past the last one's (not a duplicate) */
+    long gx2_nr_back_line;      /* the line of the first of them */
 
     /* bin */
     unsigned char buf[HX_BUF_SIZE];
@@ -2561,6 +2563,14 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
     } else {
         double d = counter - r->prev_counter, dn = nr - r->gx2_prev_nr;
         const long k = (dn >= 1.0 && dn <= (double)GX2_MAX_LOST) ? (long)dn : 1;
+        if (!(dn >= 1.0)) {
+            /* Nr back, or repeated with another timer value: rows out of
+             * order or the count restarted; taken as one period on, said at
+             * the end (it went unsaid) */
+            if (r->gx2_nr_back++ == 0) {
+                r->gx2_nr_back_line = r->stats.lines;
+            }
+        }
         if (d > 0.0 && d < (double)(GX2_TICK_HZ / 10) * (double)k &&
             (r->gx2_last_dt == 0 || labs((long)d - k * r->gx2_last_dt) < r->gx2_last_dt / 2)) {
             r->gx2_last_dt = (long)d / k;
@@ -4291,6 +4301,12 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
                  "%s: the sensor's timer restarted %ld time%s (normal for the 3DM-GX2, about once a second); each "
                  "restart bridged with the measured period (docs/log-format.md, GX2 time)",
                  r->path, r->gx2_bridged, r->gx2_bridged == 1 ? "" : "s");
+    }
+    if (r->meta.format == HX_FMT_GX2 && r->gx2_nr_back > 0) {
+        add_warn(r,
+                 "%s:%ld: the packet number Nr does not advance at %ld packet%s (the first here) that are no "
+                 "duplicate: rows out of order, or the logger's count restarted; each read as one period on",
+                 r->path, r->gx2_nr_back_line, r->gx2_nr_back, r->gx2_nr_back == 1 ? "" : "s");
     }
     if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
         /* MT Manager writes NaN where a packet lacks a value (a packet the

@@ -1489,6 +1489,26 @@ static void test_gx2_repeated_packet(void **state)
         assert_true(log.t_ns[k] == want);
     }
     assert_null(strstr(log.warnings, "restarted"));
+    assert_null(strstr(log.warnings, "does not advance"));
+    hx_log_free(&log);
+    remove(p);
+    /* Nr going back (rows out of order, a restarted count) with new timer
+     * values: read as one period on each, as before, and said (it went
+     * unsaid) */
+    f = open_gx2(p, sizeof p);
+    counter = 130516848;
+    for (k = 0; k < 10; k++) {
+        nr = (k == 6) ? 3 : (long)k + 1;
+        write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)k,
+                         1274434048.504 + 0.004 * (double)k, "250.000001");
+        counter += period;
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 10);
+    if (strstr(log.warnings, "the packet number Nr does not advance at 1 packet (the first here)") == NULL) {
+        fail_msg("Nr going back not said: '%s'", log.warnings);
+    }
     hx_log_free(&log);
     remove(p);
 }
