@@ -122,6 +122,12 @@ sel='[e for e in j["timing"]["selected"] if e["effect"] == "dropout"]'
 json "$T/dr5.json" "len($sel) == 1 and $sel[0][\"params\"][\"prob\"] == 0 and $sel[0][\"z_held_out_before\"] == $sel[0][\"z_held_out_after\"] == 40 and $sel[0][\"held_out_within_noise\"] is False" &&
     grep -q "dropped samples: 40.0 sigma above an ideal clock; held out after fitting: +40.0 sigma" "$T/dr5.out" &&
     pass "drops in the held-out part only: the same z before and after a fit of rate 0" || fail "dropout z: $(grep -E 'dropped|verdict' "$T/dr5.out") $(cat "$T/pyerr")"
+# and the static analysis's join across the gap said, as allan says it
+# (five 2 s gaps moved a real log's line and rrw answers unsaid: the
+# simgap audit)
+if grep -q "1 gap (longest 5.01 s; about 500 samples missing in all, 4.2 % of the log): the static analysis (Allan variances, lines) joins the samples across it as if consecutive" "$T/dr5.out"; then
+    pass "the gap joined by the static analysis said"
+else fail "the static analysis's gap not said: $(grep -i gap "$T/dr5.out")"; fi
 
 # an AR(1) bias correlated far longer than the record (2000 s in 600 s)
 # fits at the baseline's bound on its correlation time, which the summary
