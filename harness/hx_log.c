@@ -3176,6 +3176,12 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
             return FNAV_OK;
         }
         if (dec == 0 && rec.type == HX_BIN_REC_END) {
+            if (r->stats.clean_end) {
+                /* a writer's fault, harmless once its count is checked
+                 * like the first's: said, not taken silently */
+                add_warn(r, "%s: record #%ld at byte %lld: a second end record (the file was closed twice?)", r->path,
+                         r->record_slot, r->offset);
+            }
             r->pos += HX_BIN_RECORD_SIZE;
             r->offset += HX_BIN_RECORD_SIZE;
             r->record_slot++;

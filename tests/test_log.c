@@ -447,6 +447,23 @@ static void test_bin_end_count(void **state)
     end[46] = (unsigned char)((c >> 16) & 0xffu);
     end[47] = (unsigned char)((c >> 24) & 0xffu);
     expect_bin(b, g_golden_n, 1, 6, FNAV_E_CRC, "end record counts 5 records but 6 were read");
+    /* the END record twice (a writer closing the file twice): all six
+     * samples, the end clean, and the second said (it was taken silently) */
+    {
+        char p[256];
+        readall_t r;
+        memcpy(b, g_golden, g_golden_n);
+        memcpy(b + g_golden_n, b + HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE, HX_BIN_RECORD_SIZE);
+        tmp_path(p, sizeof p, ".bin");
+        write_file(p, b, g_golden_n + HX_BIN_RECORD_SIZE);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+        assert_int_equal(r.n, 6);
+        assert_int_equal(r.end, FNAV_END);
+        if (strstr(r.warn, "record #7 at byte 528: a second end record (the file was closed twice?)") == NULL) {
+            fail_msg("no warning for the second end record: '%s'", r.warn);
+        }
+        unlink(p);
+    }
 }
 
 /* Resynchronisation (docs/log-format.md, "corrupted record"): at the next
