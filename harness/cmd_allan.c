@@ -685,10 +685,10 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * as well, or every interval of such a uniform log would be
              * counted (as psd's; the gcd so far is never below the final one) */
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
-            if ((double)(s.t_ns - t_prev) * 1e-9 * stamp_rate > 1.5) {
+            if (hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns) > 0.0) {
                 const double dt_s = (double)(s.t_ns - t_prev) * 1e-9;
                 gaps++;
-                missing += floor(dt_s * stamp_rate + 0.5) - 1.0;
+                missing += hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns);
                 longest_gap_s = dt_s > longest_gap_s ? dt_s : longest_gap_s;
             }
         }

@@ -174,21 +174,31 @@ int hx_cmd_simgap(int argc, char **argv)
         free(r);
         return HX_EXIT_DATA;
     }
-    if (r->domain == 1 && log.t_ns != NULL && !log.meta.stamps_made && sg_log_rate(&log) > 0.0) {
+    if (r->domain == 1 && log.t_ns != NULL && !log.meta.stamps_made && log.n > 1) {
         /* a static log's gaps, said as allan says them: its Allan
          * variances and lines join the samples across them (five 2 s gaps
          * in ten minutes moved a 0.566 Hz line and took another channel's
          * rrw; the simgap audit), which the dropout effect, if named,
          * does not undo */
-        const double rate = sg_log_rate(&log);
+        /* against the stamps' own period and resolution, as allan counts
+         * them (a stated rate the stamps contradict, or stamps rounded to
+         * the ms at 800 Hz, made every interval a "gap") */
+        const double rate = hx_stamp_rate_hz(log.t_ns, log.n, NULL);
         double missing = 0.0, longest = 0.0;
+        int64_t res_ns = 0;
         long gaps = 0;
         size_t k;
         for (k = 1; k < log.n; k++) {
-            const double dt_s = (double)(log.t_ns[k] - log.t_ns[k - 1]) * 1e-9;
-            if (dt_s * rate > 1.5) {
+            if (log.t_ns[k] > log.t_ns[k - 1]) {
+                res_ns = hx_gcd_i64(log.t_ns[k] - log.t_ns[k - 1], res_ns);
+            }
+        }
+        for (k = 1; k < log.n && rate > 0.0; k++) {
+            const double lost = hx_interval_missing(log.t_ns[k] - log.t_ns[k - 1], rate, res_ns);
+            if (lost > 0.0) {
+                const double dt_s = (double)(log.t_ns[k] - log.t_ns[k - 1]) * 1e-9;
                 gaps++;
-                missing += floor(dt_s * rate + 0.5) - 1.0;
+                missing += lost;
                 longest = dt_s > longest ? dt_s : longest;
             }
         }

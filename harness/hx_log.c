@@ -3130,7 +3130,7 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 /* a valid temperature too, as the CSV reader checks it (a
                  * NaN one would be delivered and written into a CSV that
                  * the CSV reader refuses) */
-                finite &= !(rec.flags & HX_BIN_REC_TEMP) || isfinite(rec.temp);
+                finite &= !(rec.flags & HX_BIN_REC_TEMP) || !r->meta.has_temp || isfinite(rec.temp);
                 if (!finite) {
                     set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
                             r->offset);
@@ -3595,10 +3595,9 @@ int64_t hx_gcd_i64(int64_t a, int64_t b)
     return a;
 }
 
-int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
+/* The resolution's slack of an interval at rate_hz (hx_interval_irregular). */
+static double res_slack_s(double rate_hz, int64_t res_ns)
 {
-    const double dt = 1e-9 * (double)dt_ns;
-    double slack = 0.0;
     if (res_ns > 0) {
         /* a period that is a whole number of resolutions (100 Hz printed to
          * 10 ms) reads exact intervals, as hx_stamp_rate_hz takes them: no
@@ -3606,10 +3605,22 @@ int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
          * 10 ms, and a log that lost single samples was called uniform */
         const double k = 1e9 / rate_hz / (double)res_ns;
         if (fabs(k - floor(k + 0.5)) > 0.05) {
-            slack = 1e-9 * (double)res_ns;
+            return 1e-9 * (double)res_ns;
         }
     }
-    return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + slack;
+    return 0.0;
+}
+
+int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
+{
+    const double dt = 1e-9 * (double)dt_ns;
+    return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + res_slack_s(rate_hz, res_ns);
+}
+
+double hx_interval_missing(int64_t dt_ns, double rate_hz, int64_t res_ns)
+{
+    const double dt = 1e-9 * (double)dt_ns;
+    return dt > 1.5 / rate_hz + res_slack_s(rate_hz, res_ns) ? floor(dt * rate_hz + 0.5) - 1.0 : 0.0;
 }
 
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)

@@ -315,6 +315,10 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
  *  as hx_stamp_rate_hz reads them). The uniform-sampling
  *  check of psd and allan. */
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns);
+/** The samples an interval of dt_ns lost at rate_hz: 0 unless it is a gap
+ *  (over 1.5 periods, plus the resolution's slack of hx_interval_irregular),
+ *  else the periods it spans less one. allan's and simgap's gap count. */
+double hx_interval_missing(int64_t dt_ns, double rate_hz, int64_t res_ns);
 
 /** The highest rate a foot-mounted IMU's time stamps give, Hz: above it
  *  (as below 20 Hz) the stamps' unit is questioned. */

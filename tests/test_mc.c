@@ -403,32 +403,40 @@ static void test_bias_against_simulated_bias(void **state)
     run_oracles(0.0, "offset");
 }
 
+/* Oracle a and its variant b (the caller's field set on b) run side by side
+ * on a short walk with a turn, 5 runs: *res is the engine's result, *m the
+ * motion (the caller frees both). */
+static void run_variant(oracle_t *a, oracle_t *b, hx_mc_result_t *res, hx_motion_t **m)
+{
+    char err[256];
+    hx_motion_config_t mc = hx_motion_config_default();
+    hx_mc_config_t cfg;
+    hx_mc_nav_t navs[2];
+    *m = hx_motion_create(&mc, "stand:2,walk:10:90,stand:1", 0.0, err, sizeof err);
+    assert_non_null(*m);
+    a->m = b->m = *m;
+    a->scale = b->scale = 1.0;
+    navs[0] = make_nav("a", a);
+    navs[1] = make_nav("b", b);
+    mc_config_50hz(&cfg, *m, 5);
+    assert_int_equal(hx_mc_run(&cfg, navs, 2, res, NULL, NULL, err, sizeof err), 0);
+}
+
 /* q and -q are one attitude: an oracle that reports -q_est (the scalar part
  * negative) has the attitude error, and so every NEES, of the one that
  * reports q_est (rotvec's sign fold; removed by a hand-made mutant, the
  * negated oracle's attitude error was ~2 pi and nothing noticed). */
 static void test_negated_quaternion(void **state)
 {
-    char err[256];
-    hx_motion_config_t mc = hx_motion_config_default();
     hx_motion_t *m;
-    hx_mc_config_t cfg;
     hx_mc_result_t res;
     oracle_t a, b;
-    hx_mc_nav_t navs[2];
     int k, g, nb = 0;
     (void)state;
-    m = hx_motion_create(&mc, "stand:2,walk:10:90,stand:1", 0.0, err, sizeof err);
-    assert_non_null(m);
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
-    a.m = b.m = m;
-    a.scale = b.scale = 1.0;
     b.negate_q = 1;
-    navs[0] = make_nav("q", &a);
-    navs[1] = make_nav("-q", &b);
-    mc_config_50hz(&cfg, m, 5);
-    assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, NULL, NULL, err, sizeof err), 0);
+    run_variant(&a, &b, &res, &m);
     for (k = 0; k < res.var[0].nbins; k++) {
         const hx_mc_bin_t *x = &res.var[0].bins[k], *y = &res.var[1].bins[k];
         if (x->n == 0) {
@@ -457,26 +465,15 @@ static void test_negated_quaternion(void **state)
  * the horizontal, vertical and heading errors are invariant. */
 static void test_frame_from_first_estimate(void **state)
 {
-    char err[256];
-    hx_motion_config_t mc = hx_motion_config_default();
     hx_motion_t *m;
-    hx_mc_config_t cfg;
     hx_mc_result_t res;
     oracle_t a, b;
-    hx_mc_nav_t navs[2];
     int k, nb = 0;
     (void)state;
-    m = hx_motion_create(&mc, "stand:2,walk:10:90,stand:1", 0.0, err, sizeof err);
-    assert_non_null(m);
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
-    a.m = b.m = m;
-    a.scale = b.scale = 1.0;
     b.frame_yaw = 2.0; /* 115 deg: past any small-angle shortcut */
-    navs[0] = make_nav("truth's heading", &a);
-    navs[1] = make_nav("turned", &b);
-    mc_config_50hz(&cfg, m, 5);
-    assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, NULL, NULL, err, sizeof err), 0);
+    run_variant(&a, &b, &res, &m);
     for (k = 0; k < res.var[0].nbins; k++) {
         const hx_mc_bin_t *x = &res.var[0].bins[k], *y = &res.var[1].bins[k];
         if (x->n == 0) {

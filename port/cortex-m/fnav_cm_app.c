@@ -88,11 +88,11 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
         app->events |= app->frame.flags & (FNAV_FRAME_ZUPT | FNAV_FRAME_STRIDE);
         if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {
             app->frame.flags |= app->events;
-            app->events = 0u;
             FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_TX_NAV);
-            if (fnav_port_write_nav(&app->port, &app->frame) != FNAV_OK) {
-                /* link busy: counted in port_ctx.tx_dropped, the receiver sees the seq gap */
-            }
+            if (fnav_port_write_nav(&app->port, &app->frame) == FNAV_OK) {
+                app->events = 0u;
+            } /* else link busy: counted in port_ctx.tx_dropped, the receiver sees the seq gap, and the
+               * events ride on the next frame sent */
             FNAV_CM_PROF_END(FNAV_CM_PROF_TX_NAV);
         }
         st = fnav_cm_est_nav_next(&app->est, &app->frame);

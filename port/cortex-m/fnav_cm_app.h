@@ -23,7 +23,7 @@ typedef struct {
                                   navigator has no output while it aligns, so the count starts at its
                                   first output, not at the first sample. A sent frame's event bits
                                   (FNAV_FRAME_ZUPT, FNAV_FRAME_STRIDE) tell the events of the outputs
-                                  since the last frame sent, its own included */
+                                  since the last frame the link took, its own included */
     uint32_t sample_every;   /**< send every N-th raw sample as a SAMPLE frame (0: none; default 0) */
     uint32_t status_every;   /**< send a STATUS frame every N samples (0: none; default 400) */
     const char *sensor;      /**< sensor name for the INFO frame (default "footnav-fw") */
@@ -38,7 +38,8 @@ typedef struct {
     fnav_port_t port;           /**< the port layer over port_ctx */
     fnav_cm_port_ctx_t port_ctx;/**< ring buffer and frame output */
     fnav_cm_est_t est;          /**< the estimators */
-    fnav_nav_frame_t frame;     /**< last navigation output */
+    fnav_nav_frame_t frame;     /**< last navigation output (when sent, with the event bits of the outputs
+                                     since the last frame the link took) */
     uint32_t samples;           /**< samples processed */
     uint32_t nav_outputs;       /**< navigation outputs produced */
     uint32_t events;            /**< event bits of the outputs not sent yet (nav_every) */

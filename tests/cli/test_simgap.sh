@@ -128,6 +128,13 @@ json "$T/dr5.json" "len($sel) == 1 and $sel[0][\"params\"][\"prob\"] == 0 and $s
 if grep -q "1 gap (longest 5.01 s; about 500 samples missing in all, 4.2 % of the log): the static analysis (Allan variances, lines) joins the samples across it as if consecutive" "$T/dr5.out"; then
     pass "the gap joined by the static analysis said"
 else fail "the static analysis's gap not said: $(grep -i gap "$T/dr5.out")"; fi
+# against the stamps' own period and resolution: 800 Hz stamped to the ms
+# (intervals of 1 and 2 ms) has no gap (it warned of 12000, 20 %)
+"$H" sim --motion stand:60 --rate 800 --profile mtx --seed 4 --out "$T/s800.csv" >/dev/null 2>&1 || fail "sim 800 Hz"
+awk -F, 'BEGIN{OFS=","} NR==1{print;next}{$1=sprintf("%.3f",$1);print}' "$T/s800.csv" > "$T/s800ms.csv"
+"$H" simgap "$T/s800ms.csv" --seeds 4 --max-effects 0 > "$T/s800.out" 2>&1
+if grep -q "gaps\? (longest" "$T/s800.out"; then fail "stamps to the ms at 800 Hz read as gaps: $(grep 'longest' "$T/s800.out")"
+else pass "stamps to the ms at 800 Hz: no gap said"; fi
 
 # an AR(1) bias correlated far longer than the record (2000 s in 600 s)
 # fits at the baseline's bound on its correlation time, which the summary
