@@ -2552,8 +2552,10 @@ static int setup_text(hx_reader_t *r, double rate_hz)
  * 1-25 ms. */
 #define GX2_TICK_HZ 19660800L
 #define GX2_MAX_LOST 1000 /* a larger jump of Nr is taken for a restart of the count, one period */
+#define GX2_SWAP_MAX 8    /* Nr and timer back by at most this many packets: a row out of order */
 static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr, double freq_hz)
 {
+    int held = 0; /* a row out of order: the last row stays the reference */
     if (!r->have_prev) {
         r->gx2_ticks = 0;
     } else if (counter == r->prev_counter && nr == r->gx2_prev_nr) {
@@ -2570,6 +2572,11 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
             if (r->gx2_nr_back++ == 0) {
                 r->gx2_nr_back_line = r->stats.lines;
             }
+            /* Nr and timer both a few packets back: a row out of order
+             * (5, 7, 6, 8). The next row is then counted from the highest
+             * (7), not from this one: from 6, 8's jump of two would insert
+             * a second period (two gaps where the log has none) */
+            held = dn <= -1.0 && dn >= -(double)GX2_SWAP_MAX && d < 0.0;
         }
         if (d > 0.0 && d < (double)(GX2_TICK_HZ / 10) * (double)k &&
             (r->gx2_last_dt == 0 || labs((long)d - k * r->gx2_last_dt) < r->gx2_last_dt / 2)) {
@@ -2577,7 +2584,7 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
             r->gx2_ticks += (long)d;
         } else if (r->gx2_last_dt > 0) {
             r->gx2_ticks += k * r->gx2_last_dt;
-            r->gx2_bridged++;
+            r->gx2_bridged += !held; /* a row out of order is no timer restart */
         } else {
             double dh = host_s - r->gx2_prev_host;
             if (freq_hz > 10.0 && freq_hz < 10000.0) {
@@ -2589,9 +2596,11 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
             r->gx2_bridged++;
         }
     }
-    r->prev_counter = counter;
-    r->gx2_prev_host = host_s;
-    r->gx2_prev_nr = nr;
+    if (!held) {
+        r->prev_counter = counter;
+        r->gx2_prev_host = host_s;
+        r->gx2_prev_nr = nr;
+    }
     /* whole seconds apart: ticks x 1e9 leaves int64 after 469 s (a longer
      * log would read "time goes backwards" there) */
     return (r->gx2_ticks / GX2_TICK_HZ) * 1000000000LL + ((r->gx2_ticks % GX2_TICK_HZ) * 1000000000LL) / GX2_TICK_HZ;
@@ -4321,9 +4330,10 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
     }
     if (r->meta.format == HX_FMT_GX2 && r->gx2_nr_back > 0) {
         add_warn(r,
-                 "%s:%ld: the packet number Nr does not advance at %ld packet%s (the first here) that are no "
-                 "duplicate: rows out of order, or the logger's count restarted; each read as one period on",
-                 r->path, r->gx2_nr_back_line, r->gx2_nr_back, r->gx2_nr_back == 1 ? "" : "s");
+                 "%s:%ld: the packet number Nr does not advance at %ld packet%s (the first here), %s: rows out "
+                 "of order, or the logger's count restarted; each read as one period on",
+                 r->path, r->gx2_nr_back_line, r->gx2_nr_back, r->gx2_nr_back == 1 ? "" : "s",
+                 r->gx2_nr_back == 1 ? "not a repeat of the packet before" : "none a repeat of the packet before");
     }
     if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
         /* MT Manager writes NaN where a packet lacks a value (a packet the

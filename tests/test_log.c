@@ -1527,8 +1527,34 @@ static void test_gx2_repeated_packet(void **state)
     assert_int_equal(fclose(f), 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
     assert_int_equal(log.n, 10);
-    if (strstr(log.warnings, "the packet number Nr does not advance at 1 packet (the first here)") == NULL) {
+    if (strstr(log.warnings, "the packet number Nr does not advance at 1 packet (the first here), not a repeat") ==
+        NULL) {
         fail_msg("Nr going back not said: '%s'", log.warnings);
+    }
+    hx_log_free(&log);
+    remove(p);
+    /* two rows swapped (Nr 1-4, 6, 5, 7-10, each with its own timer value):
+     * 6 looks like a jump of two (one period inserted, unknowable until 5
+     * comes), 5 is read one period on, and 7 is counted from 6, the
+     * highest, one period on; counted from 5 it was a second jump of two,
+     * a second inserted period (two gaps where the log has none). The
+     * swapped row is no timer restart. */
+    f = open_gx2(p, sizeof p);
+    for (k = 0; k < 10; k++) {
+        nr = (k == 4) ? 6 : (k == 5) ? 5 : (long)k + 1;
+        write_gx2_record(f, (unsigned long)(130516848 + (nr - 1) * period), nr, 1274434048.5 + 0.004 * (double)k,
+                         1274434048.504 + 0.004 * (double)k, "250.000001");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 10);
+    for (k = 1; k < log.n; k++) {
+        const int64_t dt = log.t_ns[k] - log.t_ns[k - 1], one = period * 1000000000LL / 19660800LL;
+        assert_true(llabs(dt - (k == 4 ? 2 : 1) * one) <= 1);
+    }
+    assert_non_null(strstr(log.warnings, "does not advance at 1 packet"));
+    if (strstr(log.warnings, "timer restarted") != NULL) {
+        fail_msg("a swapped row taken for a timer restart: '%s'", log.warnings);
     }
     hx_log_free(&log);
     remove(p);
