@@ -223,7 +223,7 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 # Budget (issue 7): whole image with every estimator.
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
-# Stack reserved after .bss (must hold the worst case of the stack report, which
+# Stack reserved at the bottom of RAM, below .data and .bss (must hold the worst case of the stack report, which
 # assumes one interrupt level). 1592: the report's 1,476 plus SysTick_Handler
 # (8) with a second FPU exception frame (104) for a board whose SysTick preempts
 # the sample interrupt, 1,588, rounded up to 8 bytes (AAPCS); docs/firmware.md.
@@ -250,9 +250,11 @@ QEMU_FLAGS := -M mps2-an386 -display none -monitor none -serial none -chardev st
 FW_HOSTREF := $(BUILD)/fw/footnav-bench-host
 FW_SLICE_GEN := $(BUILD)/fw/fw_slice
 
-# Rebuild the images when the firmware options change (FW_DEFS, the slice).
+# Rebuild the images when the firmware options change (FW_DEFS, the slice,
+# the compiler's flags: `make firmware ARM_CFLAGS=...` objects were reused by
+# a later plain build).
 FW_STAMP  := $(ARM_BUILD)/fw-options.stamp
-FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE)
+FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE) | $(ARM_CC) $(ARM_CFLAGS)
 ifneq ($(filter firmware firmware-bench $(ARM_BUILD)/%,$(MAKECMDGOALS)),)
 $(shell mkdir -p $(ARM_BUILD) && (echo '$(FW_OPTIONS)' | cmp -s - $(FW_STAMP) || echo '$(FW_OPTIONS)' > $(FW_STAMP)))
 endif
@@ -269,7 +271,7 @@ $(ARM_BUILD)/bench/%.o: %.c $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_CPPFLAGS) -DFNAV_CM_PROFILE=1 $(ARM_CFLAGS) -MMD -MP -c $< -o $@
 
-$(ARM_BUILD)/bench/gen/%.o: $(ARM_BUILD)/gen/%.c
+$(ARM_BUILD)/bench/gen/%.o: $(ARM_BUILD)/gen/%.c $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_CPPFLAGS) $(ARM_CFLAGS) -c $< -o $@
 

@@ -208,8 +208,11 @@ static void print_estimates(void)
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
 #define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
 #define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
-#define NVIC_ISER0 (*(volatile uint32_t *)0xE000E100u)
-#define NVIC_ISPR0 (*(volatile uint32_t *)0xE000E200u)
+/* NVIC set-enable and set-pending registers: 32 interrupts a word, so
+ * interrupt n is bit n % 32 of word n / 32 (ARMv7-M ARM B3.4.4, B3.4.6) */
+#define NVIC_ISER(n) (((volatile uint32_t *)0xE000E100u)[(n) / 32])
+#define NVIC_ISPR(n) (((volatile uint32_t *)0xE000E200u)[(n) / 32])
+#define NVIC_BIT(n) (1u << ((n) % 32))
 
 /* Extra ids beyond the main loop's: the interrupt, the navigation step
  * split by what it did (from FNAV_CM_PROF_NOTE), the stance detector alone,
@@ -460,13 +463,13 @@ void FNAV_CM_Sample_IRQHandler(void)
 
 static void raise_sample_irq(void)
 {
-    NVIC_ISPR0 = 1u << FNAV_CM_SAMPLE_IRQN;
+    NVIC_ISPR(FNAV_CM_SAMPLE_IRQN) = NVIC_BIT(FNAV_CM_SAMPLE_IRQN);
     __asm volatile("dsb\n isb" ::: "memory");
 }
 
 static void irq_enable(void)
 {
-    NVIC_ISER0 = 1u << FNAV_CM_SAMPLE_IRQN;
+    NVIC_ISER(FNAV_CM_SAMPLE_IRQN) = NVIC_BIT(FNAV_CM_SAMPLE_IRQN);
     __asm volatile("cpsie i" ::: "memory");
 }
 

@@ -186,6 +186,38 @@ if $CC $ARCH -Os -std=c99 -Iinclude -Iport/cortex-m -DFNAV_CM_IRQ_COUNT=40 \
 elif grep -q "multiple of 32" "$T/err"; then pass "FNAV_CM_IRQ_COUNT=40 refused at compile time"
 else fail "FNAV_CM_IRQ_COUNT=40: $(cat "$T/err")"; fi
 
+# the benchmark image's sample interrupt at 40: the NVIC's enable and
+# pending bits are bit 8 of their second words (ISER1 0xE000E104, ISPR1
+# 0xE000E204); a shift of 1 by 40 into the first words did not build
+if $CC $ARCH -Os -std=c99 -pedantic -Wall -Wextra -Werror -Iinclude -Iport/cortex-m \
+    -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"' -DFNAV_CM_PROFILE=1 -DFNAV_CM_IRQ_COUNT=64 \
+    -DFNAV_CM_SAMPLE_IRQN=40 -c port/cortex-m/fnav_cm_bench.c -o "$T/bench40.o" 2>"$T/err"; then
+    arm-none-eabi-objdump -d "$T/bench40.o" >"$T/bench40.s"
+    if grep -Eq 'str(\.w)?[[:space:]].*@ 0x104$' "$T/bench40.s" && grep -Eq 'str(\.w)?[[:space:]].*@ 0x204$' "$T/bench40.s"
+    then pass "sample interrupt 40: the benchmark sets ISER1 and ISPR1"
+    else fail "sample interrupt 40: no store to ISER1 / ISPR1 (+0x104, +0x204) in the benchmark"; fi
+else
+    fail "fnav_cm_bench.c does not build with the sample interrupt at 40: $(cat "$T/err")"
+fi
+
+# the firmware's objects are rebuilt when the compiler's flags change: they
+# are part of the options stamp the objects depend on
+make -n firmware ARM_BUILD="$T/arm" >/dev/null 2>&1
+cp "$T/arm/fw-options.stamp" "$T/stamp0"
+make -n firmware ARM_BUILD="$T/arm" ARM_CFLAGS="-O2 -mthumb" >/dev/null 2>&1
+if grep -q -- "-Os" "$T/stamp0" && grep -q -- "-O2 -mthumb" "$T/arm/fw-options.stamp"; then
+    pass "ARM_CFLAGS is part of the firmware's options stamp"
+else fail "ARM_CFLAGS not in the options stamp: $(cat "$T/stamp0") / $(cat "$T/arm/fw-options.stamp")"; fi
+# an object newer than the stamp (as if built by the plain build) is up to
+# date until the flags change
+make -n firmware ARM_BUILD="$T/arm" >/dev/null 2>&1
+mkdir -p "$T/arm/obj/src" && touch "$T/arm/obj/src/fnav_ukf.o"
+if make -q ARM_BUILD="$T/arm" "$T/arm/obj/src/fnav_ukf.o" >/dev/null 2>&1 &&
+    make -n ARM_BUILD="$T/arm" ARM_CFLAGS="-O2 -mthumb" "$T/arm/obj/src/fnav_ukf.o" 2>/dev/null |
+    grep -q -- "-O2 -mthumb.*fnav_ukf"; then
+    pass "an object built with other flags is rebuilt"
+else fail "src/fnav_ukf.o not rebuilt when ARM_CFLAGS changed"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_firmware_tools.sh: $fails failure(s)"
     exit 1
