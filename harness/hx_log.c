@@ -2155,10 +2155,11 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
 static void mtmgr_peek(hx_reader_t *r)
 {
     char *f[HX_MAX_COLS];
-    while (gzgets(r->gz, r->line, (int)sizeof r->line) != NULL) {
-        const size_t len = strlen(r->line);
+    size_t len;
+    int nul;
+    while (hx_gzgets(r->gz, r->line, (int)sizeof r->line, &len, &nul) != NULL) {
         int n;
-        if (len == 0 || (r->line[len - 1] != '\n' && !gzeof(r->gz))) {
+        if (nul || len == 0 || (r->line[len - 1] != '\n' && !gzeof(r->gz))) {
             break;
         }
         if (blank(r->line)) {
