@@ -32,6 +32,9 @@
  * a frame takes 1 ms at 460800 baud). */
 #define IDLE_FLUSH_S 1.0
 #define RECENT_N 64 /* accepted samples remembered to recognise a late copy (0.16 s at 400 Hz) */
+/* Samples in a row stamped behind the last one while the frame sequence
+ * goes on: then not a stamp out of order but the sender's clock gone back */
+#define BACK_RUN_MAX 8
 #define MAX_WARNINGS 20
 /* A status line says how long no frame has come once it is this long: a
  * sender that stopped with the port still open (a pty whose writer went, a
@@ -113,6 +116,7 @@ typedef struct {
         unsigned frame_seq;
         int64_t t_ns;
         uint32_t seq;
+        uint32_t crc;             /* of the payload: a copy is the same bytes */
     } recent[RECENT_N];
     unsigned n_recent;
     unsigned prev_frame_seq;      /* seq of the last valid frame */
@@ -129,8 +133,29 @@ typedef struct {
     int have_sensor_seq;          /* the last accepted sample carried the sensor's counter */
     int have_info, have_end, have_status;
     int restarted;                /* a sample went back in time: the sender restarted */
+    int clock_back;               /* ... with the frame sequence going on (BACK_RUN_MAX stamps behind) */
     double restart_from_s, restart_to_s;
     unsigned restart_seq;
+    /* the last sample accepted is held back by one sample before it is
+     * navigated and recorded: a stamp far ahead of the samples on both sides
+     * is known only at the next sample, and is dropped then (recorded, it
+     * made every later sample "time goes back") */
+    fnav_sample_t held;
+    int have_held;
+    int64_t t_before_ns;          /* time of the sample accepted before the held one */
+    int have_before;
+    int64_t dt_before_ns;         /* the interval that ends there (0: none yet) */
+    uint32_t restarts_at_last;    /* the decoder's true sequence restarts when the last sample was accepted */
+    uint32_t bad_stamps;          /* samples dropped for a time stamp out of order (in bad_samples too) */
+    uint32_t back_run;            /* samples in a row stamped behind the last, frame sequence going on */
+    uint32_t samples_at_restart;  /* samples accepted before the last sequence restart */
+    int have_seq_restart;
+    /* the INFO frame the recording's header was written with */
+    fnav_wire_info_t hdr_info;
+    int hdr_has_info;
+    int rate_changed;             /* an INFO frame changed the rate during the session */
+    int told_name;                /* control characters in the INFO's text were said */
+    int traj_partial;             /* out of memory: the summary covers the first outputs */
     fnav_wire_info_t info;
     fnav_wire_status_t status;
     uint32_t end_count;
@@ -196,16 +221,25 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
             }
         }
     }
-    if (L->traj.n == L->traj.cap) {
+    if (L->traj.n == L->traj.cap && !L->traj_partial) {
         size_t nc = L->traj.cap ? 2 * L->traj.cap : 16384;
         fnav_nav_frame_t *p = (fnav_nav_frame_t *)realloc(L->traj.f, nc * sizeof *p);
-        if (p == NULL) {
-            return; /* the summary covers what fitted */
+        if (p != NULL) {
+            L->traj.f = p;
+            L->traj.cap = nc;
+        } else {
+            /* the summary covers what fitted, and says so: a run "until
+             * switched off" keeps sizeof(fnav_nav_frame_t) bytes an output */
+            end_status_line(L);
+            hx_warn(CMD, "out of memory keeping the trajectory (%zu outputs, %.0f MB): the summary, --json and "
+                    "--plot cover those; the trajectory CSV and the recording go on with every sample",
+                    L->traj.n, (double)(L->traj.n * sizeof *p) / 1e6);
+            L->traj_partial = 1;
         }
-        L->traj.f = p;
-        L->traj.cap = nc;
     }
-    L->traj.f[L->traj.n++] = *f;
+    if (L->traj.n < L->traj.cap) {
+        L->traj.f[L->traj.n++] = *f;
+    }
     if (L->axes != NULL) {
         hx_axes_frame(L->axes, f);
     }
@@ -270,23 +304,34 @@ static void warn_limited(live_t *L, const char *msg)
     L->warnings++;
 }
 
-/* Report what the decoder's counters say happened since the last frame. */
+static uint32_t payload_crc(const fnav_wire_frame_t *f)
+{
+    return fnav_crc32(0u, f->payload, f->len);
+}
+
 /* 1 when the SAMPLE frame f is a copy of one of the recent accepted ones
- * (its frame seq, time and counter), received again. */
+ * (its frame seq, time and counter, and the same bytes: a sender restarted
+ * within RECENT_N samples, stamping from its sample counter, sends the same
+ * keys with other values, which are no copy), received again. */
 static int recent_copy(const live_t *L, const fnav_wire_frame_t *f)
 {
     fnav_sample_t s;
     unsigned k, n = L->n_recent < RECENT_N ? L->n_recent : RECENT_N;
+    uint32_t crc;
     if (f->type != FNAV_WIRE_SAMPLE || fnav_wire_parse_sample(f, &s) != FNAV_OK) {
         return 0;
     }
+    crc = payload_crc(f);
     for (k = 0; k < n; k++) {
-        if (L->recent[k].frame_seq == (unsigned)f->seq && L->recent[k].t_ns == s.t_ns && L->recent[k].seq == s.seq) {
+        if (L->recent[k].frame_seq == (unsigned)f->seq && L->recent[k].t_ns == s.t_ns && L->recent[k].seq == s.seq &&
+            L->recent[k].crc == crc) {
             return 1;
         }
     }
     return 0;
 }
+
+/* Report what the decoder's counters say happened since the last frame. */
 
 static void report_link(live_t *L, const fnav_wire_frame_t *f)
 {
@@ -333,6 +378,11 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
         } else {
             snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
             warn_limited(L, msg);
+            /* a sender's END counts its samples since its own start: with
+             * its clock going on, the session goes on too, and END is
+             * compared with the samples since this restart as well */
+            L->samples_at_restart = L->samples;
+            L->have_seq_restart = 1;
         }
     }
     L->last_stats = *s;
@@ -340,23 +390,33 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
     L->have_prev_frame = 1;
 }
 
+/* The recording's header from the last good INFO frame: the sensor, the
+ * axes, the flags and the rate, unless the rate changed in the session (0,
+ * unknown: the samples keep their stamps). */
+static void recording_meta(const live_t *L, hx_meta_t *meta)
+{
+    memset(meta, 0, sizeof *meta);
+    meta->format = HX_FMT_BIN;
+    if (L->have_info) {
+        meta->rate_hz = L->rate_changed ? 0.0 : L->info.rate_hz;
+        meta->rate_nominal = (L->info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) != 0u && !L->rate_changed;
+        meta->has_temp = (L->info.flags & FNAV_WIRE_INFO_TEMP) != 0u;
+        meta->has_seq = (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u;
+        snprintf(meta->sensor, sizeof meta->sensor, "%s", L->info.sensor);
+        snprintf(meta->axes, sizeof meta->axes, "%s", L->info.axes);
+    } else {
+        snprintf(meta->sensor, sizeof meta->sensor, "unknown (no INFO frame)");
+    }
+    snprintf(meta->source, sizeof meta->source, "harness live");
+}
+
 static int open_recording(live_t *L)
 {
     hx_meta_t meta;
     char err[HX_ERR_SIZE];
-    memset(&meta, 0, sizeof meta);
-    meta.format = HX_FMT_BIN;
-    if (L->have_info) {
-        meta.rate_hz = L->info.rate_hz;
-        meta.rate_nominal = (L->info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) != 0u;
-        meta.has_temp = (L->info.flags & FNAV_WIRE_INFO_TEMP) != 0u;
-        meta.has_seq = (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u;
-        snprintf(meta.sensor, sizeof meta.sensor, "%s", L->info.sensor);
-        snprintf(meta.axes, sizeof meta.axes, "%s", L->info.axes);
-    } else {
-        snprintf(meta.sensor, sizeof meta.sensor, "unknown (no INFO frame)");
-    }
-    snprintf(meta.source, sizeof meta.source, "harness live");
+    L->hdr_info = L->info;
+    L->hdr_has_info = L->have_info;
+    recording_meta(L, &meta);
     L->rec = hx_writer_open(L->record_path, HX_FMT_BIN, &meta, 1, err, sizeof err);
     if (L->rec == NULL) {
         hx_error(CMD, "%s", err);
@@ -364,6 +424,29 @@ static int open_recording(live_t *L)
         return -1;
     }
     return 0;
+}
+
+/* At the end: an INFO frame that came after the first sample (live joined
+ * a sender already running: the reference firmware sends INFO once), or
+ * that changed, is written into the recording's header, which was written
+ * at the first sample; 1 when it was. */
+static int update_recording_header(live_t *L)
+{
+    hx_meta_t meta;
+    if (L->rec == NULL || !L->have_info ||
+        (L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && L->hdr_info.flags == L->info.flags &&
+         strcmp(L->hdr_info.sensor, L->info.sensor) == 0 && strcmp(L->hdr_info.axes, L->info.axes) == 0 &&
+         !L->rate_changed)) {
+        return 0;
+    }
+    recording_meta(L, &meta);
+    if (hx_writer_rewrite_header(L->rec, &meta) != FNAV_OK) {
+        end_status_line(L);
+        hx_warn(CMD, "%s: the header could not be rewritten with the INFO frame that came later (%s); it says what "
+                "was known at the first sample", L->record_path, strerror(errno));
+        return 0;
+    }
+    return 1;
 }
 
 static void hist_push(hist_t *h, double t, double a, double w)
@@ -380,15 +463,11 @@ static void hist_push(hist_t *h, double t, double a, double w)
     }
 }
 
+/* A sample released from the hold: navigated, recorded, plotted. */
 static void on_sample(live_t *L, const fnav_sample_t *s)
 {
     double a2 = 0.0, w2 = 0.0;
     int i;
-    if (L->samples == 0u) {
-        L->t_first_ns = s->t_ns;
-    }
-    L->samples++;
-    L->t_last_ns = s->t_ns;
     for (i = 0; i < 3; i++) {
         a2 += (double)s->accel_mps2[i] * (double)s->accel_mps2[i];
         w2 += (double)s->gyro_rps[i] * (double)s->gyro_rps[i];
@@ -442,6 +521,111 @@ static void sensor_counter(live_t *L, const fnav_sample_t *s)
     L->bad_at_last = L->bad_samples;
 }
 
+/* A sample taken: counted, and held back by one sample (live_t.held) while
+ * the one held before is navigated and recorded. */
+static void accept_sample(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s)
+{
+    sensor_counter(L, s);
+    if (L->samples == 0u) {
+        L->t_first_ns = s->t_ns;
+    }
+    L->dt_before_ns = L->have_before ? L->t_last_ns - L->t_before_ns : 0;
+    L->have_before = L->samples > 0u;
+    L->t_before_ns = L->t_last_ns;
+    L->samples++;
+    L->t_last_ns = s->t_ns;
+    L->last_frame_seq = (unsigned)f->seq;
+    L->last_sample_seq = s->seq;
+    L->recent[L->n_recent % RECENT_N].frame_seq = (unsigned)f->seq;
+    L->recent[L->n_recent % RECENT_N].t_ns = s->t_ns;
+    L->recent[L->n_recent % RECENT_N].seq = s->seq;
+    L->recent[L->n_recent % RECENT_N].crc = payload_crc(f);
+    L->n_recent++;
+    L->restarts_at_last = L->dec.stats.resets - L->seq_repeats;
+    L->back_run = 0u;
+    if (L->have_held) {
+        on_sample(L, &L->held);
+    }
+    L->held = *s;
+    L->have_held = 1;
+}
+
+/* The held sample, navigated and recorded: at the end of the run. */
+static void release_held(live_t *L)
+{
+    if (L->have_held) {
+        L->have_held = 0;
+        on_sample(L, &L->held);
+    }
+}
+
+/* Did the sender go on from the last sample accepted to s: no restart of
+ * the frame sequence since (copies aside), and the sensor's counter, when
+ * both carry it, one or more ahead? */
+static int in_sequence(const live_t *L, const fnav_sample_t *s)
+{
+    const int counted = L->have_info && (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u &&
+                        (s->flags & FNAV_SAMPLE_HAS_SEQ) != 0u && L->have_sensor_seq;
+    const uint32_t step = s->seq - L->last_sample_seq;
+    return L->dec.stats.resets - L->seq_repeats == L->restarts_at_last && (!counted || (step >= 1u && step < 0x80000000u));
+}
+
+/* A sample s stamped behind the held one H while the sender went on. When
+ * it lies after P, the sample before H, either H is stamped late or s
+ * early: with T the interval before P (or the INFO's period), H is the one
+ * out of order when s fits two intervals after P better than H fits one
+ * (a stamp far ahead: 1000 s against 2.5 ms). That one, still held, is
+ * dropped and s taken. Otherwise s is dropped; BACK_RUN_MAX of them in a
+ * row are the sender's clock gone back, which ends the session as a
+ * restart does. */
+static int held_is_ahead(const live_t *L, const fnav_sample_t *s)
+{
+    double T = (double)L->dt_before_ns;
+    if (!(L->have_held && L->have_before && s->t_ns >= L->t_before_ns)) {
+        return 0;
+    }
+    if (!(T > 0.0) && L->have_info && L->info.rate_hz > 0.0) {
+        T = 1e9 / L->info.rate_hz;
+    }
+    return T > 0.0 && fabs((double)(s->t_ns - L->t_before_ns) - 2.0 * T) < fabs((double)(L->t_last_ns - L->t_before_ns) - T);
+}
+
+static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s)
+{
+    char msg[240];
+    L->bad_samples++;
+    L->bad_stamps++;
+    if (held_is_ahead(L, s)) {
+        snprintf(msg, sizeof msg,
+                 "bad time stamp: sample frame seq %u stamped %.6f s, ahead of the samples on both sides (%.6f and "
+                 "%.6f s); it is skipped",
+                 L->last_frame_seq, (double)L->t_last_ns * 1e-9, (double)L->t_before_ns * 1e-9,
+                 (double)s->t_ns * 1e-9);
+        warn_limited(L, msg);
+        const int64_t dt_p = L->dt_before_ns; /* the interval that ends at P, P's again below */
+        L->have_held = 0;
+        L->samples--;
+        L->t_last_ns = L->t_before_ns;
+        accept_sample(L, f, s);
+        L->dt_before_ns = dt_p;
+        return;
+    }
+    snprintf(msg, sizeof msg,
+             "bad time stamp: sample frame seq %u stamped %.6f s, behind the last sample's %.6f s while the frame "
+             "sequence goes on; skipped (a stamp out of order, not a restart)",
+             (unsigned)f->seq, (double)s->t_ns * 1e-9, (double)L->t_last_ns * 1e-9);
+    warn_limited(L, msg);
+    if (L->back_run++ == 0u) { /* where the run began, for the message */
+        L->restart_from_s = (double)L->t_last_ns * 1e-9;
+        L->restart_to_s = (double)s->t_ns * 1e-9;
+        L->restart_seq = (unsigned)f->seq;
+    }
+    if (L->back_run >= BACK_RUN_MAX) {
+        L->restarted = 1;
+        L->clock_back = 1;
+    }
+}
+
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 {
     report_link(L, f);
@@ -456,7 +640,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             st = fnav_sample_check(&s);
         }
         if (st == FNAV_OK && L->samples > 0u && (unsigned)f->seq == L->last_frame_seq && s.t_ns == L->t_last_ns &&
-            s.seq == L->last_sample_seq) {
+            s.seq == L->last_sample_seq && payload_crc(f) == L->recent[(L->n_recent - 1u) % RECENT_N].crc) {
             /* the same frame again (a sender's or a link's repetition): one
              * sample, not two with dt = 0 (a sensor's own duplicate comes in
              * a frame of its own, with the next frame seq) */
@@ -477,6 +661,11 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
                      "repeated frame: sample frame seq %u received again after seq %u (a late copy); skipped",
                      (unsigned)f->seq, L->prev_frame_seq);
             warn_limited(L, msg);
+        } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns && in_sequence(L, &s)) {
+            /* time back with the frame sequence (and the sensor's counter)
+             * going on: a stamp out of order, not a restart (one stamp 0.5
+             * ms early ended the session: the live audit of 2026-12-06) */
+            out_of_order(L, f, &s);
         } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session
              * ends here, with the recording readable to this point */
@@ -485,14 +674,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_to_s = (double)s.t_ns * 1e-9;
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
-            sensor_counter(L, &s);
-            on_sample(L, &s);
-            L->last_frame_seq = (unsigned)f->seq;
-            L->last_sample_seq = s.seq;
-            L->recent[L->n_recent % RECENT_N].frame_seq = (unsigned)f->seq;
-            L->recent[L->n_recent % RECENT_N].t_ns = s.t_ns;
-            L->recent[L->n_recent % RECENT_N].seq = s.seq;
-            L->n_recent++;
+            accept_sample(L, f, &s);
         } else {
             char msg[160];
             L->bad_samples++;
@@ -509,6 +691,28 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
              * UART at a lower rate falls behind, losing frames (warned, as
              * stream warns) */
             const double need_bps = (double)info.rate_hz * (double)FNAV_WIRE_FRAME_SIZE(FNAV_WIRE_SAMPLE_LEN) * 10.0;
+            char clean[sizeof info.axes];
+            int ctl;
+            /* the sender's text, shown and recorded as one line of text: a
+             * control character (a line break, an escape that clears the
+             * terminal) becomes '?', as the .bin reader reads it */
+            ctl = strcmp(hx_line_str(clean, sizeof info.sensor, info.sensor), info.sensor) != 0;
+            memcpy(info.sensor, clean, sizeof info.sensor); /* a string of at most as many bytes */
+            ctl |= strcmp(hx_line_str(clean, sizeof info.axes, info.axes), info.axes) != 0;
+            memcpy(info.axes, clean, sizeof info.axes);
+            if (ctl && !L->told_name) {
+                L->told_name = 1;
+                warn_limited(L, "the INFO frame's sensor name or axis note holds control characters (shown and "
+                                "recorded as '?')");
+            }
+            if (L->have_info && L->samples > 0u && info.rate_hz != L->info.rate_hz && !L->rate_changed) {
+                char msg[200];
+                L->rate_changed = 1;
+                snprintf(msg, sizeof msg, "the sender's INFO frame seq %u changes its rate from %.6g to %.6g Hz: the "
+                         "recording's header gives no rate (0), the samples keep their own stamps",
+                         (unsigned)f->seq, L->info.rate_hz, info.rate_hz);
+                warn_limited(L, msg);
+            }
             L->info = info;
             L->have_info = 1;
             if (need_bps > (double)L->baud && !L->told_baud) {
@@ -934,6 +1138,7 @@ int hx_cmd_live(int argc, char **argv)
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L, g_stop && !gone && !timed_out);
+    release_held(&L); /* the last sample taken, held back by one */
     /* how the run ended: a signal that comes later (while the last picture
      * is drawn) ends nothing, so the summary does not say "stopped by
      * SIGINT" after a --timeout, a hang-up or a restart */
@@ -943,6 +1148,13 @@ int hx_cmd_live(int argc, char **argv)
     hx_serial_close(port);
 
     /* the recording first: it must be complete whatever happens below */
+    if (update_recording_header(&L)) {
+        fprintf(stderr, "harness live: %s: the header was written again at the end with the sender's last INFO "
+                        "frame (%s)\n",
+                L.record_path, !L.hdr_has_info ? "none had come by the first sample"
+                               : L.rate_changed ? "it changed during the session; the rate given as unknown"
+                                                : "it changed during the session");
+    }
     if (L.rec != NULL) {
         char werr[HX_ERR_SIZE];
         if (hx_writer_close(L.rec, werr, sizeof werr) != FNAV_OK) {
@@ -967,7 +1179,8 @@ int hx_cmd_live(int argc, char **argv)
         }
     }
     if (L.plot_pid > 0) {
-        waitpid(L.plot_pid, NULL, 0);
+        while (waitpid(L.plot_pid, NULL, 0) < 0 && errno == EINTR) {
+        }
         L.plot_pid = 0;
     }
     if (plot_every > 0.0 && L.hist.n > 0u) {
@@ -975,8 +1188,13 @@ int hx_cmd_live(int argc, char **argv)
          * status is looked at, so that a picture gnuplot failed to draw
          * does not exit 0 */
         int st = 0;
+        pid_t w = -1;
         plot_async(&L, plot_png);
-        if (L.plot_pid <= 0 || waitpid(L.plot_pid, &st, 0) < 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+        /* a signal after the one that ended the run interrupts the wait
+         * (that handler has no SA_RESTART), not the picture: wait on */
+        while (L.plot_pid > 0 && (w = waitpid(L.plot_pid, &st, 0)) < 0 && errno == EINTR) {
+        }
+        if (L.plot_pid <= 0 || w < 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
             hx_error(CMD, "the last picture %s was not drawn (the error above)", plot_png);
             L.plot_failed = 1;
         }
@@ -987,8 +1205,13 @@ int hx_cmd_live(int argc, char **argv)
         const fnav_wire_stats_t *s = &L.dec.stats;
         FILE *sum_out = (L.csv == stdout) ? stderr : stdout;
         double span = span_s(&L);
-        uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
-        uint32_t extra = L.have_end && L.samples > L.end_count ? L.samples - L.end_count : 0u;
+        /* END counts the sender's samples since its own start: after a
+         * restart of the frame sequence with the clock going on (the
+         * session went on), those since the restart (which said so) */
+        const uint32_t since = L.samples - L.samples_at_restart;
+        const int end_since = L.have_end && L.have_seq_restart && L.end_count == since && since != L.samples;
+        uint32_t missing = L.have_end && !end_since && L.end_count > L.samples ? L.end_count - L.samples : 0u;
+        uint32_t extra = L.have_end && !end_since && L.samples > L.end_count ? L.samples - L.end_count : 0u;
         /* corrupt frames that may have held data: not the noise between two
          * frames in sequence, nor the frame a Ctrl-C cut */
         uint32_t bad_frames = s->bad_frames - L.noise - L.cut;
@@ -1010,6 +1233,11 @@ int hx_cmd_live(int argc, char **argv)
             snprintf(why, sizeof why, "%s", gone_msg);
         } else if (timed_out) {
             snprintf(why, sizeof why, "no valid frame for %.1f s (--timeout)%s%s", timeout, what[0] ? ": " : "", what);
+        } else if (L.restarted && L.clock_back) {
+            snprintf(why, sizeof why,
+                     "the sender's clock went back from %.6f s to %.6f s at sample frame seq %u and stayed behind for "
+                     "%d samples while the frame sequence went on (its clock reset, or a stamp before was far ahead)",
+                     L.restart_from_s, L.restart_to_s, L.restart_seq, BACK_RUN_MAX);
         } else if (L.restarted) {
             snprintf(why, sizeof why, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u",
                      L.restart_from_s, L.restart_to_s, L.restart_seq);
@@ -1060,12 +1288,14 @@ int hx_cmd_live(int argc, char **argv)
                 cJSON_AddNumberToObject(link, "lost_frames", (double)s->lost);
                 cJSON_AddNumberToObject(link, "drops", (double)s->gaps);
                 cJSON_AddNumberToObject(link, "bad_samples", (double)L.bad_samples);
+                cJSON_AddNumberToObject(link, "bad_stamps", (double)L.bad_stamps);
                 cJSON_AddNumberToObject(link, "bad_info", (double)L.bad_info);
                 cJSON_AddNumberToObject(link, "skipped_bytes", (double)s->skipped_bytes);
                 cJSON_AddNumberToObject(link, "sequence_restarts", (double)(s->resets - L.seq_repeats));
                 cJSON_AddNumberToObject(link, "repeated_samples", (double)L.repeated);
                 cJSON_AddNumberToObject(link, "sensor_missing", (double)L.sensor_missing);
                 cJSON_AddNumberToObject(link, "wall_s", hx_now_s() - t0);
+                cJSON_AddBoolToObject(link, "summary_partial", L.traj_partial);
                 cJSON_AddItemToObject(x, "link", link);
                 if (hx_nav_write_json(json_path, a.pos[0], cmdline, &L.traj, &sum, x, err, sizeof err) != 0) {
                     hx_error(CMD, "%s", err);
@@ -1084,13 +1314,17 @@ int hx_cmd_live(int argc, char **argv)
                (unsigned)L.by_type[FNAV_WIRE_END], (unsigned)L.by_type[0]);
         {
             char noise[80] = "";
+            char stamps[80] = "";
             if (L.noise > 0u) {
                 snprintf(noise, sizeof noise, " (%u of them noise between intact frames)", (unsigned)L.noise);
             }
-            fprintf(sum_out, "live: link: %u bad frames%s, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
-                   "%u sequence restarts, %u repeated sample frames skipped\n",
+            if (L.bad_stamps > 0u) {
+                snprintf(stamps, sizeof stamps, " (%u of them time stamps out of order)", (unsigned)L.bad_stamps);
+            }
+            fprintf(sum_out, "live: link: %u bad frames%s, %u lost frames in %u drops, %u bad samples%s, %u bytes "
+                   "skipped, %u sequence restarts, %u repeated sample frames skipped\n",
                    (unsigned)(s->bad_frames - L.cut), noise, (unsigned)s->lost, (unsigned)s->gaps,
-                   (unsigned)L.bad_samples, (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats),
+                   (unsigned)L.bad_samples, stamps, (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats),
                    (unsigned)L.repeated);
         }
         if (L.sensor_missing > 0u) {
@@ -1121,9 +1355,18 @@ int hx_cmd_live(int argc, char **argv)
                              "raw samples (the reference firmware sends them with sample_every = 1, "
                              "docs/firmware.md)\n");
         }
-        if (L.have_end) {
+        if (L.have_end && end_since) {
+            fprintf(sum_out, "live: end: END frame, the sender sent %u samples since it restarted, %u received in "
+                             "all\n",
+                    (unsigned)L.end_count, (unsigned)L.samples);
+        } else if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
+        } else if (L.restarted) {
+            fprintf(sum_out, "live: end: %s\n",
+                    L.clock_back ? "the sender's clock went back" : "the sender restarted");
+        } else if (L.rec_failed && !stop_sig) {
+            fprintf(sum_out, "live: end: the recording failed\n");
         } else if (stop_sig) {
             /* how the run ended, said as for END and a vanished port */
             fprintf(sum_out, "live: end: stopped by %s%s\n",

@@ -4464,6 +4464,33 @@ static int ends_with(const char *s, const char *suffix)
     return hx_ends_in(s, strlen(s), suffix);
 }
 
+/* The .bin header's bytes for meta (NULL: none known). */
+static void bin_header_of(const hx_meta_t *meta, unsigned char hb[HX_BIN_HEADER_SIZE])
+{
+    hx_bin_header_t h;
+    memset(&h, 0, sizeof h);
+    h.rate_hz = (meta != NULL) ? meta->rate_hz : 0.0;
+    if (!(h.rate_hz >= 0.0 && h.rate_hz <= 1.0e6)) {
+        /* a rate the reader refuses (stamps a thousand times too dense
+         * imply MHz) is stored as 0, "not known": the samples carry
+         * their own stamps, and the file stays readable (written as it
+         * is, it would be refused by every command) */
+        h.rate_hz = 0.0;
+    }
+    h.flags = 0;
+    if (meta != NULL && h.rate_hz > 0.0) {
+        h.flags |= meta->rate_nominal ? HX_BIN_FLAG_RATE_NOMINAL : 0u;
+    }
+    if (meta != NULL) {
+        h.flags |= meta->has_temp ? HX_BIN_FLAG_TEMP : 0u;
+        h.flags |= meta->has_seq ? HX_BIN_FLAG_SEQ : 0u;
+        copy_str(h.sensor, sizeof h.sensor, meta->sensor);
+        copy_str(h.source, sizeof h.source, meta->source);
+        copy_str(h.axes, sizeof h.axes, meta->axes);
+    }
+    hx_bin_header_encode(&h, hb);
+}
+
 hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta, int sync_each, char *err,
                             size_t err_size)
 {
@@ -4492,28 +4519,7 @@ hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *
     w->has_temp = meta != NULL && meta->has_temp;
     if (fmt == HX_FMT_BIN) {
         unsigned char hb[HX_BIN_HEADER_SIZE];
-        hx_bin_header_t h;
-        memset(&h, 0, sizeof h);
-        h.rate_hz = (meta != NULL) ? meta->rate_hz : 0.0;
-        if (!(h.rate_hz >= 0.0 && h.rate_hz <= 1.0e6)) {
-            /* a rate the reader refuses (stamps a thousand times too dense
-             * imply MHz) is stored as 0, "not known": the samples carry
-             * their own stamps, and the file stays readable (written as it
-             * is, it would be refused by every command) */
-            h.rate_hz = 0.0;
-        }
-        h.flags = 0;
-        if (meta != NULL && h.rate_hz > 0.0) {
-            h.flags |= meta->rate_nominal ? HX_BIN_FLAG_RATE_NOMINAL : 0u;
-        }
-        if (meta != NULL) {
-            h.flags |= meta->has_temp ? HX_BIN_FLAG_TEMP : 0u;
-            h.flags |= meta->has_seq ? HX_BIN_FLAG_SEQ : 0u;
-            copy_str(h.sensor, sizeof h.sensor, meta->sensor);
-            copy_str(h.source, sizeof h.source, meta->source);
-            copy_str(h.axes, sizeof h.axes, meta->axes);
-        }
-        hx_bin_header_encode(&h, hb);
+        bin_header_of(meta, hb);
         if (fwrite(hb, 1, sizeof hb, w->f) != sizeof hb) {
             snprintf(err, err_size, "%s: write failed (%s)", path, strerror(errno));
             if (w->f != stdout) {
@@ -4583,6 +4589,28 @@ fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s)
     }
     w->count++;
     w->last_t_ns = s->t_ns;
+    if (w->sync_each && fflush(w->f) != 0) {
+        w->failed = 1;
+        return FNAV_E_IO;
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t hx_writer_rewrite_header(hx_writer_t *w, const hx_meta_t *meta)
+{
+    unsigned char hb[HX_BIN_HEADER_SIZE];
+    long at;
+    if (w == NULL || w->fmt != HX_FMT_BIN || w->failed) {
+        return FNAV_E_ARG;
+    }
+    bin_header_of(meta, hb);
+    if (fflush(w->f) != 0 || (at = ftell(w->f)) < 0 || fseek(w->f, 0L, SEEK_SET) != 0) {
+        return FNAV_E_IO; /* a pipe: the header stays */
+    }
+    if (fwrite(hb, 1, sizeof hb, w->f) != sizeof hb || fseek(w->f, at, SEEK_SET) != 0) {
+        w->failed = 1;
+        return FNAV_E_IO;
+    }
     if (w->sync_each && fflush(w->f) != 0) {
         w->failed = 1;
         return FNAV_E_IO;

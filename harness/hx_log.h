@@ -267,6 +267,10 @@ typedef struct hx_writer hx_writer_t;
 hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta,
                             int sync_each, char *err, size_t err_size);
 fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s);
+/** .bin: write the header again for meta (the file's records stay);
+ *  FNAV_E_IO when the file cannot seek (a pipe: the header stays) or the
+ *  write fails. */
+fnav_status_t hx_writer_rewrite_header(hx_writer_t *w, const hx_meta_t *meta);
 /** Finish the file (.bin: END record) and close it. */
 fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size);
 

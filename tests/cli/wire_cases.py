@@ -15,6 +15,23 @@ usage: wire_cases.py CASE OUT
             101 and between 200 and 201: a false sync word announcing a
             SAMPLE frame, then 20 zero bytes (two corrupt candidates, no frame
             lost)
+  restart_early 50 samples, then the sender restarts and sends 300 with the
+            same frame seq, time and counter as before but other values (no
+            copies), and an END
+  glitch    300 samples and an END; sample 150 stamped 0.5 ms before sample
+            149 (the frame sequence and the counter going on)
+  spike     the same, sample 150 stamped 1000 s ahead
+  clockback 300 samples from 100 s and an END; from sample 150 on the stamps
+            are 10 s back (the frame sequence and the counter going on)
+  lateinfo  100 samples with temperature, then the INFO frame (rate, flags 7:
+            nominal rate, temperature, counter; name 'IMU-X'), 200 more, END
+  ratechange INFO at 400 Hz (nominal), 100 samples, INFO at 100 Hz, 100
+            samples, END
+  ctlname   an INFO frame whose name holds a line break and an escape
+            sequence, 300 samples, END
+  reboot    Unix-time stamps: 200 samples, the sender reboots (INFO with
+            frame seq 0, frames and counter from 0 again, its clock going on
+            1 s later), 200 samples and an END counting those 200
 """
 import math
 import os
@@ -28,8 +45,8 @@ from gen_wire import frame, sample_payload, nav_payload, text, SAMPLE, NAV, INFO
 DT_NS = 2500000  # 400 Hz
 
 
-def info(rate):
-    return frame(INFO, 0, struct.pack('<dI', rate, 4) + text('test sender', 32) + text('', 48))
+def info(rate, flags=4, name='test sender', seq=0):
+    return frame(INFO, seq, struct.pack('<dI', rate, flags) + text(name, 32) + text('', 48))
 
 
 def still(k, t0_ns=0):
@@ -112,6 +129,40 @@ def main():
         fr.insert(200, junk)
         fr.insert(100, junk)
         b = info(400.0) + b''.join(fr) + end(301, 300)
+    elif case == 'restart_early':
+        b = info(400.0) + samples(50)
+        b += info(400.0) + b''.join(
+            frame(SAMPLE, k + 1, sample_payload(k * DT_NS, k, 2, (9.81, 0.0, 0.0), (0.0, 0.0, 0.0), 0.0))
+            for k in range(300))
+        b += end(301, 300)
+    elif case in ('glitch', 'spike', 'clockback'):
+        t0 = 100 * 10**9 if case == 'clockback' else 0
+        b = info(400.0)
+        for k in range(300):
+            t = t0 + k * DT_NS
+            if case == 'glitch' and k == 150:
+                t = t0 + 149 * DT_NS - 500000
+            elif case == 'spike' and k == 150:
+                t += 1000 * 10**9
+            elif case == 'clockback' and k >= 150:
+                t -= 10 * 10**9
+            b += frame(SAMPLE, k + 1, sample_payload(t, k, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0))
+        b += end(301, 300)
+    elif case == 'lateinfo':
+        fr = [frame(SAMPLE, k + 1, sample_payload(k * DT_NS, k, 3, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 25.0))
+              for k in range(300)]
+        b = b''.join(fr[:100]) + info(400.0, 7, 'IMU-X', 101) + b''.join(
+            frame(SAMPLE, k + 2, sample_payload(k * DT_NS, k, 3, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 25.0))
+            for k in range(100, 300)) + end(302, 300)
+    elif case == 'ratechange':
+        b = info(400.0, 5) + samples(100) + info(100.0, 5, 'test sender', 101)
+        b += b''.join(frame(SAMPLE, 2 + k, still(k)) for k in range(100, 200)) + end(202, 200)
+    elif case == 'ctlname':
+        b = info(400.0, 4, 'IMU\n"x"\x1b[2J') + samples(300) + end(301, 300)
+    elif case == 'reboot':
+        t0 = 1700000000 * 10**9
+        b = info(400.0) + samples(200, 1, t0)
+        b += info(400.0) + samples(200, 1, t0 + 200 * DT_NS + 10**9) + end(201, 200)
     else:
         sys.exit('unknown case ' + case)
     with open(out, 'wb') as f:
