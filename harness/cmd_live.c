@@ -122,6 +122,7 @@ typedef struct {
     unsigned prev_frame_seq;      /* seq of the last valid frame */
     int have_prev_frame;
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
+    uint32_t last_crc;            /* its payload's CRC */
     uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
     long baud;                    /* --baud */
@@ -142,9 +143,20 @@ typedef struct {
      * made every later sample "time goes back") */
     fnav_sample_t held;
     int have_held;
-    int64_t t_before_ns;          /* time of the sample accepted before the held one */
-    int have_before;
-    int64_t dt_before_ns;         /* the interval that ends there (0: none yet) */
+    /* the last three samples accepted, newest first (the held one, P
+     * before it, and the one before P), for which of two is out of order */
+    struct {
+        int64_t t_ns;
+        unsigned fseq;
+    } acc[3];
+    unsigned n_acc;
+    /* samples stamped behind the held one, set aside: BACK_RUN_MAX of them
+     * rising after P mean the held one was ahead (taken back then) */
+    struct {
+        fnav_sample_t s;
+        unsigned fseq;
+        uint32_t crc;
+    } run[BACK_RUN_MAX];
     uint32_t restarts_at_last;    /* the decoder's true sequence restarts when the last sample was accepted */
     uint32_t bad_stamps;          /* samples dropped for a time stamp out of order (in bad_samples too) */
     uint32_t back_run;            /* samples in a row stamped behind the last, frame sequence going on */
@@ -521,26 +533,36 @@ static void sensor_counter(live_t *L, const fnav_sample_t *s)
     L->bad_at_last = L->bad_samples;
 }
 
+/* A SAMPLE frame kept among the recent ones (a later copy of it is
+ * skipped): the samples taken and those dropped for their stamps. */
+static void remember(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t *s)
+{
+    L->recent[L->n_recent % RECENT_N].frame_seq = fseq;
+    L->recent[L->n_recent % RECENT_N].t_ns = s->t_ns;
+    L->recent[L->n_recent % RECENT_N].seq = s->seq;
+    L->recent[L->n_recent % RECENT_N].crc = crc;
+    L->n_recent++;
+}
+
 /* A sample taken: counted, and held back by one sample (live_t.held) while
  * the one held before is navigated and recorded. */
-static void accept_sample(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s)
+static void accept_sample(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t *s)
 {
     sensor_counter(L, s);
     if (L->samples == 0u) {
         L->t_first_ns = s->t_ns;
     }
-    L->dt_before_ns = L->have_before ? L->t_last_ns - L->t_before_ns : 0;
-    L->have_before = L->samples > 0u;
-    L->t_before_ns = L->t_last_ns;
+    L->acc[2] = L->acc[1];
+    L->acc[1] = L->acc[0];
+    L->acc[0].t_ns = s->t_ns;
+    L->acc[0].fseq = fseq;
+    L->n_acc += L->n_acc < 3u;
     L->samples++;
     L->t_last_ns = s->t_ns;
-    L->last_frame_seq = (unsigned)f->seq;
+    L->last_frame_seq = fseq;
     L->last_sample_seq = s->seq;
-    L->recent[L->n_recent % RECENT_N].frame_seq = (unsigned)f->seq;
-    L->recent[L->n_recent % RECENT_N].t_ns = s->t_ns;
-    L->recent[L->n_recent % RECENT_N].seq = s->seq;
-    L->recent[L->n_recent % RECENT_N].crc = payload_crc(f);
-    L->n_recent++;
+    L->last_crc = crc;
+    remember(L, fseq, crc, s);
     L->restarts_at_last = L->dec.stats.resets - L->seq_repeats;
     L->back_run = 0u;
     if (L->have_held) {
@@ -548,6 +570,20 @@ static void accept_sample(live_t *L, const fnav_wire_frame_t *f, const fnav_samp
     }
     L->held = *s;
     L->have_held = 1;
+}
+
+/* The held sample dropped (stamped ahead): P becomes the last taken. */
+static void drop_held(live_t *L)
+{
+    L->have_held = 0;
+    L->samples--;
+    L->acc[0] = L->acc[1];
+    L->acc[1] = L->acc[2];
+    L->n_acc--;
+    if (L->n_acc > 0u) {
+        L->t_last_ns = L->acc[0].t_ns;
+        L->last_frame_seq = L->acc[0].fseq;
+    }
 }
 
 /* The held sample, navigated and recorded: at the end of the run. */
@@ -570,44 +606,69 @@ static int in_sequence(const live_t *L, const fnav_sample_t *s)
     return L->dec.stats.resets - L->seq_repeats == L->restarts_at_last && (!counted || (step >= 1u && step < 0x80000000u));
 }
 
-/* A sample s stamped behind the held one H while the sender went on. When
- * it lies after P, the sample before H, either H is stamped late or s
- * early: with T the interval before P (or the INFO's period), H is the one
- * out of order when s fits two intervals after P better than H fits one
- * (a stamp far ahead: 1000 s against 2.5 ms). That one, still held, is
- * dropped and s taken. Otherwise s is dropped; BACK_RUN_MAX of them in a
- * row are the sender's clock gone back, which ends the session as a
- * restart does. */
-static int held_is_ahead(const live_t *L, const fnav_sample_t *s)
+/* A sample s (frame seq fseq) stamped behind the held one H while the
+ * sender went on. When it lies after P, the sample before H, either H is
+ * stamped late or s early: with T the interval per frame before P (or the
+ * INFO's period), H is the one out of order when s fits its frame distance
+ * from P in intervals better than H fits its own (a stamp far ahead: 1000
+ * s against 2.5 ms; the distances count the frames a link lost). */
+static int held_is_ahead(const live_t *L, const fnav_sample_t *s, unsigned fseq)
 {
-    double T = (double)L->dt_before_ns;
-    if (!(L->have_held && L->have_before && s->t_ns >= L->t_before_ns)) {
+    double T = 0.0;
+    double n_s, n_h;
+    if (!(L->have_held && L->n_acc >= 2u && s->t_ns >= L->acc[1].t_ns)) {
         return 0;
+    }
+    if (L->n_acc >= 3u) {
+        const unsigned d = (uint16_t)(L->acc[1].fseq - L->acc[2].fseq);
+        if (d > 0u && L->acc[1].t_ns > L->acc[2].t_ns) {
+            T = (double)(L->acc[1].t_ns - L->acc[2].t_ns) / (double)d;
+        }
     }
     if (!(T > 0.0) && L->have_info && L->info.rate_hz > 0.0) {
         T = 1e9 / L->info.rate_hz;
     }
-    return T > 0.0 && fabs((double)(s->t_ns - L->t_before_ns) - 2.0 * T) < fabs((double)(L->t_last_ns - L->t_before_ns) - T);
+    n_s = (double)(uint16_t)(fseq - L->acc[1].fseq);
+    n_h = (double)(uint16_t)(L->acc[0].fseq - L->acc[1].fseq);
+    return T > 0.0 && fabs((double)(s->t_ns - L->acc[1].t_ns) - n_s * T) <
+                          fabs((double)(L->acc[0].t_ns - L->acc[1].t_ns) - n_h * T);
 }
 
+/* Samples set aside for a stamp behind the held one that rise, each at or
+ * after the one before, and start after P (or there is no P). */
+static int run_after_p(const live_t *L)
+{
+    unsigned i;
+    for (i = 1; i < L->back_run; i++) {
+        if (L->run[i].s.t_ns < L->run[i - 1].s.t_ns) {
+            return 0;
+        }
+    }
+    return L->have_held && (L->n_acc < 2u || L->run[0].s.t_ns >= L->acc[1].t_ns);
+}
+
+/* s stamped behind the held one H while the sender went on: H dropped (s
+ * taken) when H is the one out of order (held_is_ahead), else s set aside.
+ * BACK_RUN_MAX set aside in a row: when they rise after P, H was ahead of
+ * them all (the first sample stamped ahead, no P to judge by; a link's
+ * loss before it): H is dropped and they are taken back; otherwise the
+ * sender's clock went back, which ends the session as a restart does. */
 static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s)
 {
     char msg[240];
+    const uint32_t crc = payload_crc(f);
+    unsigned i;
     L->bad_samples++;
     L->bad_stamps++;
-    if (held_is_ahead(L, s)) {
+    if (held_is_ahead(L, s, (unsigned)f->seq)) {
         snprintf(msg, sizeof msg,
                  "bad time stamp: sample frame seq %u stamped %.6f s, ahead of the samples on both sides (%.6f and "
                  "%.6f s); it is skipped",
-                 L->last_frame_seq, (double)L->t_last_ns * 1e-9, (double)L->t_before_ns * 1e-9,
+                 L->last_frame_seq, (double)L->t_last_ns * 1e-9, (double)L->acc[1].t_ns * 1e-9,
                  (double)s->t_ns * 1e-9);
         warn_limited(L, msg);
-        const int64_t dt_p = L->dt_before_ns; /* the interval that ends at P, P's again below */
-        L->have_held = 0;
-        L->samples--;
-        L->t_last_ns = L->t_before_ns;
-        accept_sample(L, f, s);
-        L->dt_before_ns = dt_p;
+        drop_held(L);
+        accept_sample(L, (unsigned)f->seq, crc, s);
         return;
     }
     snprintf(msg, sizeof msg,
@@ -615,14 +676,33 @@ static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sampl
              "sequence goes on; skipped (a stamp out of order, not a restart)",
              (unsigned)f->seq, (double)s->t_ns * 1e-9, (double)L->t_last_ns * 1e-9);
     warn_limited(L, msg);
-    if (L->back_run++ == 0u) { /* where the run began, for the message */
+    remember(L, (unsigned)f->seq, crc, s);
+    if (L->back_run == 0u) { /* where the run began, for the message */
         L->restart_from_s = (double)L->t_last_ns * 1e-9;
         L->restart_to_s = (double)s->t_ns * 1e-9;
         L->restart_seq = (unsigned)f->seq;
     }
-    if (L->back_run >= BACK_RUN_MAX) {
+    L->run[L->back_run].s = *s;
+    L->run[L->back_run].fseq = (unsigned)f->seq;
+    L->run[L->back_run].crc = crc;
+    if (++L->back_run < BACK_RUN_MAX) {
+        return;
+    }
+    if (!run_after_p(L)) {
         L->restarted = 1;
         L->clock_back = 1;
+        return;
+    }
+    snprintf(msg, sizeof msg,
+             "bad time stamp: sample frame seq %u stamped %.6f s, ahead of the %d samples after it (from %.6f s), "
+             "which are taken back; it is skipped",
+             L->last_frame_seq, (double)L->t_last_ns * 1e-9, BACK_RUN_MAX, (double)L->run[0].s.t_ns * 1e-9);
+    warn_limited(L, msg);
+    L->bad_samples -= BACK_RUN_MAX - 1u; /* the run taken, the held one dropped */
+    L->bad_stamps -= BACK_RUN_MAX - 1u;
+    drop_held(L);
+    for (i = 0; i < BACK_RUN_MAX; i++) {
+        accept_sample(L, L->run[i].fseq, L->run[i].crc, &L->run[i].s);
     }
 }
 
@@ -640,7 +720,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             st = fnav_sample_check(&s);
         }
         if (st == FNAV_OK && L->samples > 0u && (unsigned)f->seq == L->last_frame_seq && s.t_ns == L->t_last_ns &&
-            s.seq == L->last_sample_seq && payload_crc(f) == L->recent[(L->n_recent - 1u) % RECENT_N].crc) {
+            s.seq == L->last_sample_seq && payload_crc(f) == L->last_crc) {
             /* the same frame again (a sender's or a link's repetition): one
              * sample, not two with dt = 0 (a sensor's own duplicate comes in
              * a frame of its own, with the next frame seq) */
@@ -649,12 +729,13 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             snprintf(msg, sizeof msg, "repeated frame: sample frame seq %u received twice; the copy skipped",
                      (unsigned)f->seq);
             warn_limited(L, msg);
-        } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns && recent_copy(L, f)) {
+        } else if (st == FNAV_OK && L->samples > 0u && recent_copy(L, f)) {
             /* a copy of an earlier frame arriving late (a link's stale
              * repetition): its time goes back, but it is no restart, which
              * would end the run with the rest of the session lost (the live
-             * audit: one stale copy kept 3,002 of 16,539 samples). The
-             * decoder's sequence is set back by report_link. */
+             * audit: one stale copy kept 3,002 of 16,539 samples); also a
+             * copy of one dropped for a stamp ahead, which is not behind.
+             * The decoder's sequence is set back by report_link. */
             char msg[160];
             L->repeated++;
             snprintf(msg, sizeof msg,
@@ -674,7 +755,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_to_s = (double)s.t_ns * 1e-9;
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
-            accept_sample(L, f, &s);
+            accept_sample(L, (unsigned)f->seq, payload_crc(f), &s);
         } else {
             char msg[160];
             L->bad_samples++;
@@ -1209,9 +1290,12 @@ int hx_cmd_live(int argc, char **argv)
          * restart of the frame sequence with the clock going on (the
          * session went on), those since the restart (which said so) */
         const uint32_t since = L.samples - L.samples_at_restart;
-        const int end_since = L.have_end && L.have_seq_restart && L.end_count == since && since != L.samples;
-        uint32_t missing = L.have_end && !end_since && L.end_count > L.samples ? L.end_count - L.samples : 0u;
-        uint32_t extra = L.have_end && !end_since && L.samples > L.end_count ? L.samples - L.end_count : 0u;
+        const double off_all = fabs((double)L.end_count - (double)L.samples);
+        const int end_since = L.have_end && L.have_seq_restart && since != L.samples &&
+                              fabs((double)L.end_count - (double)since) < off_all;
+        const uint32_t got = end_since ? since : L.samples;
+        uint32_t missing = L.have_end && L.end_count > got ? L.end_count - got : 0u;
+        uint32_t extra = L.have_end && got > L.end_count ? got - L.end_count : 0u;
         /* corrupt frames that may have held data: not the noise between two
          * frames in sequence, nor the frame a Ctrl-C cut */
         uint32_t bad_frames = s->bad_frames - L.noise - L.cut;
@@ -1219,7 +1303,7 @@ int hx_cmd_live(int argc, char **argv)
                               : stop_sig ? (stop_sig == SIGINT ? "SIGINT" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"))
                               : timed_out ? "timeout"
                               : gone      ? "port gone"
-                              : L.restarted ? "sender restarted"
+                              : L.restarted ? (L.clock_back ? "clock went back" : "sender restarted")
                               : L.rec_failed ? "recording failed"
                                              : "unknown";
         char what[120] = "";
@@ -1356,9 +1440,9 @@ int hx_cmd_live(int argc, char **argv)
                              "docs/firmware.md)\n");
         }
         if (L.have_end && end_since) {
-            fprintf(sum_out, "live: end: END frame, the sender sent %u samples since it restarted, %u received in "
-                             "all\n",
-                    (unsigned)L.end_count, (unsigned)L.samples);
+            fprintf(sum_out, "live: end: END frame, the sender sent %u samples since it restarted, %u received "
+                             "since (%u in all)\n",
+                    (unsigned)L.end_count, (unsigned)since, (unsigned)L.samples);
         } else if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);

@@ -503,6 +503,20 @@ expect_rc "$LIVE_RC" 1 "live with one stamp 1000 s ahead"
 grep_in "$T/live.err" "bad time stamp: sample frame seq 151 stamped 1000.375000 s, ahead of the samples on both sides (0.372500 and 0.377500 s); it is skipped" "the stamp ahead is found and dropped"
 grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the session goes on past the stamp ahead"
 reads_back rec_sp.bin 299 "the recording holds every other sample"
+# a late copy of a sample dropped for its stamp is a copy, not a restart
+live_case glitch_copy rec_gc.bin 5
+grep_in "$T/live.err" "repeated frame: sample frame seq 151 received again after seq 153 (a late copy); skipped" "the copy of a dropped sample is a copy"
+grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the session goes on to its END"
+# the first sample stamped ahead, no INFO, nothing before it to judge by:
+# the 8 samples after it, rising, show it; they are taken back
+live_case spike_first rec_sf.bin 5
+grep_in "$T/live.err" "bad time stamp: sample frame seq 1 stamped 1000.000000 s, ahead of the 8 samples after it (from 0.002500 s), which are taken back; it is skipped" "the first sample stamped ahead is found"
+grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the session goes on"
+reads_back rec_sf.bin 299 "the recording holds every other sample"
+# after frames lost on the link the intervals count the frames lost: the
+# early sample is the one dropped, not the one before it
+live_case loss_early rec_le.bin 5
+grep_in "$T/live.err" "bad time stamp: sample frame seq 152 stamped 0.374500 s, behind the last sample's 0.375000 s" "after a loss the early stamp is the one dropped"
 # the clock back for good with the sequence going on: eight in a row end the session
 live_case clockback rec_cb.bin 5
 expect_rc "$LIVE_RC" 1 "live when the sender's clock goes back 10 s"
@@ -512,8 +526,11 @@ reads_back rec_cb.bin 150 "the recording holds the samples before it"
 # a reboot whose clock goes on: the session goes on, END counts since the restart
 live_case reboot rec_rb.bin 5
 expect_rc "$LIVE_RC" 0 "live across a sender's reboot with its clock going on (nothing lost)"
-grep_in "$T/live.out" "END frame, the sender sent 200 samples since it restarted, 400 received in all" "END is read against the samples since the restart"
+grep_in "$T/live.out" "END frame, the sender sent 200 samples since it restarted, 200 received since (400 in all)" "END is read against the samples since the restart"
 reads_back rec_rb.bin 400 "the recording holds both"
+live_case reboot_lost rec_rbl.bin 5
+expect_rc "$LIVE_RC" 1 "live across a reboot, a frame lost after it"
+grep_in "$T/live.err" "incomplete: 1 frames lost, 0 corrupt frames, 0 bad samples, 0 bad INFO frames, 1 samples missing, 0 more than the sender sent" "the loss after the restart is counted against END (not '199 more than the sender sent')"
 
 # an INFO frame after the first sample (live joined a running sender) is
 # written into the recording's header at the end: its sensor, rate and
@@ -535,6 +552,8 @@ live_case ctlname rec_cn.bin 5
 grep_in "$T/live.out" 'live: sender: IMU?"x"?\[2J, 400 Hz' "the sender's name is printed as one line of text"
 if grep -q "$(printf '\033')" "$T/live.out"; then fail "an escape byte reached the terminal"; else pass "no escape byte in the summary"; fi
 grep_in "$T/live.err" "holds control characters (shown and recorded as '?')" "said once"
+reads_back rec_cn.bin 300 "the recording reads back"
+grep_in "$T/info.out" 'sensor      IMU?"x"?\[2J' "the recording's header holds the name as one line"
 
 # interrupt_after_records RECORDING N PAUSE: once the recording holds N
 # samples, wait PAUSE s, Ctrl-C live and end the sender running as $DRIP
@@ -686,12 +705,15 @@ if /usr/bin/python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1
 # the interrupted wait said "the last picture was not drawn", exit 3, and
 # the picture came after; the live audit). A gnuplot that takes 1 s and
 # writes its file.
-live_with_gnuplot gp1 '#!/bin/sh\nf=$(sed -n "s/^set output .\\(.*\\).$/\\1/p" | head -n 1)\nsleep 1\n: >"$f"\n' \
-    --timeout 30 --plot "$T/two.png" --plot-every 100
+# (the gnuplot adds a line to a file beside it when it starts: the last
+# picture's, whose 1 s the second signal lands in)
+live_with_gnuplot gp1 '#!/bin/sh\necho run >>"${0%/*}/started"\nf=$(sed -n "s/^set output .\\(.*\\).$/\\1/p" | head -n 1)\nsleep 1\n: >"$f"\n' \
+    --timeout 30 --plot "$T/two.png" --plot-every 100 --record "$T/rec_two.bin"
 send_still 0
-sleep 0.5 # the samples arrive
+wait_for '[ -f "$T/rec_two.bin" ] && [ "$(records "$T/rec_two.bin")" -ge 99 ]' 100
 kill -INT "$LIVE" 2>/dev/null
-sleep 0.3
+wait_for '[ -s "$T/gp1/started" ]' 100
+sleep 0.2
 kill -INT "$LIVE" 2>/dev/null
 wait_live
 expect_rc "$LIVE_RC" 0 "live with a second Ctrl-C while the last picture is drawn"

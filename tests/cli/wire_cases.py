@@ -21,6 +21,12 @@ usage: wire_cases.py CASE OUT
   glitch    300 samples and an END; sample 150 stamped 0.5 ms before sample
             149 (the frame sequence and the counter going on)
   spike     the same, sample 150 stamped 1000 s ahead
+  glitch_copy the glitch case, its early frame (seq 151) sent again after
+            frame 153
+  spike_first no INFO frame; the first sample stamped 1000 s ahead, then
+            299 more and an END
+  loss_early 300 samples, frames 141-150 lost on the link, frame 152 stamped
+            0.5 ms before frame 151, END
   clockback 300 samples from 100 s and an END; from sample 150 on the stamps
             are 10 s back (the frame sequence and the counter going on)
   lateinfo  100 samples with temperature, then the INFO frame (rate, flags 7:
@@ -32,6 +38,7 @@ usage: wire_cases.py CASE OUT
   reboot    Unix-time stamps: 200 samples, the sender reboots (INFO with
             frame seq 0, frames and counter from 0 again, its clock going on
             1 s later), 200 samples and an END counting those 200
+  reboot_lost the same, frame 50 after the reboot lost on the link
 """
 import math
 import os
@@ -135,19 +142,25 @@ def main():
             frame(SAMPLE, k + 1, sample_payload(k * DT_NS, k, 2, (9.81, 0.0, 0.0), (0.0, 0.0, 0.0), 0.0))
             for k in range(300))
         b += end(301, 300)
-    elif case in ('glitch', 'spike', 'clockback'):
+    elif case in ('glitch', 'spike', 'clockback', 'glitch_copy', 'spike_first', 'loss_early'):
         t0 = 100 * 10**9 if case == 'clockback' else 0
-        b = info(400.0)
+        fr = []
         for k in range(300):
             t = t0 + k * DT_NS
-            if case == 'glitch' and k == 150:
+            if case in ('glitch', 'glitch_copy') and k == 150:
                 t = t0 + 149 * DT_NS - 500000
-            elif case == 'spike' and k == 150:
+            elif (case == 'spike' and k == 150) or (case == 'spike_first' and k == 0):
                 t += 1000 * 10**9
             elif case == 'clockback' and k >= 150:
                 t -= 10 * 10**9
-            b += frame(SAMPLE, k + 1, sample_payload(t, k, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0))
-        b += end(301, 300)
+            elif case == 'loss_early' and k == 151:
+                t = t0 + 150 * DT_NS - 500000
+            fr.append(frame(SAMPLE, k + 1, sample_payload(t, k, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)))
+        if case == 'glitch_copy':
+            fr.insert(153, fr[150])
+        elif case == 'loss_early':
+            del fr[140:150]
+        b = (b'' if case == 'spike_first' else info(400.0)) + b''.join(fr) + end(301, 300)
     elif case == 'lateinfo':
         fr = [frame(SAMPLE, k + 1, sample_payload(k * DT_NS, k, 3, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 25.0))
               for k in range(300)]
@@ -159,10 +172,13 @@ def main():
         b += b''.join(frame(SAMPLE, 2 + k, still(k)) for k in range(100, 200)) + end(202, 200)
     elif case == 'ctlname':
         b = info(400.0, 4, 'IMU\n"x"\x1b[2J') + samples(300) + end(301, 300)
-    elif case == 'reboot':
+    elif case in ('reboot', 'reboot_lost'):
         t0 = 1700000000 * 10**9
         b = info(400.0) + samples(200, 1, t0)
-        b += info(400.0) + samples(200, 1, t0 + 200 * DT_NS + 10**9) + end(201, 200)
+        fr = [frame(SAMPLE, k + 1, still(k, t0 + 200 * DT_NS + 10**9)) for k in range(200)]
+        if case == 'reboot_lost':
+            del fr[49]
+        b += info(400.0) + b''.join(fr) + end(201, 200)
     else:
         sys.exit('unknown case ' + case)
     with open(out, 'wb') as f:
