@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "footnav/fnav_wire.h"
@@ -50,17 +51,18 @@ static void on_signal(int sig)
     g_stop = sig; /* the signal, for the exit status */
 }
 
+/* Sleep until t (hx_now_s's clock), in slices of at most 1 s: a wait of
+ * any length (a slow --speed on a long gap) never casts a huge double to
+ * time_t, and a signal ends it */
 static void sleep_until(double t)
 {
-    struct timespec ts;
-    double now = hx_now_s();
-    if (t <= now) {
-        return;
-    }
-    t -= now;
-    ts.tv_sec = (time_t)t;
-    ts.tv_nsec = (long)((t - (double)ts.tv_sec) * 1e9);
-    while (nanosleep(&ts, &ts) != 0 && errno == EINTR && !g_stop) {
+    double now;
+    while (!g_stop && (now = hx_now_s()) < t) {
+        const double d = (t - now < 1.0) ? t - now : 1.0;
+        struct timespec ts;
+        ts.tv_sec = (time_t)d;
+        ts.tv_nsec = (long)((d - (double)ts.tv_sec) * 1e9);
+        (void)nanosleep(&ts, NULL); /* EINTR: the loop looks at g_stop */
     }
 }
 
@@ -102,6 +104,18 @@ static uint8_t *tx_room(tx_t *tx, const volatile sig_atomic_t *stop)
     return tx->buf + tx->n;
 }
 
+/* 1 when the number text has a non-zero digit before its exponent (a
+ * value that strtod read as 0 by underflow, not a zero) */
+static int nonzero_mantissa(const char *t)
+{
+    for (; *t != '\0' && *t != 'e' && *t != 'E'; t++) {
+        if (*t >= '1' && *t <= '9') {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int hx_cmd_stream(int argc, char **argv)
 {
     hx_args_t a;
@@ -132,6 +146,22 @@ int hx_cmd_stream(int argc, char **argv)
         hx_error(CMD, "--rate and --speed exclude each other");
         return HX_EXIT_USAGE;
     }
+    if (hx_arg(&a, "--speed") != NULL && (speed > 0.0 ? speed < 1e-3 : nonzero_mantissa(hx_arg(&a, "--speed")))) {
+        /* a speed so small that the wait overflowed played at full speed;
+         * one below the smallest double (1e-400) read as 0, full speed */
+        hx_error(CMD, "--speed %s: give 0 (as fast as the port takes it) or at least 0.001", hx_arg(&a, "--speed"));
+        return HX_EXIT_USAGE;
+    }
+    {
+        /* a serial port or terminal given as the log (the arguments swapped:
+         * live takes PORT first) would be read as a log for ever */
+        struct stat st;
+        if (stat(a.pos[0], &st) == 0 && S_ISCHR(st.st_mode)) {
+            hx_error(CMD, "%s is a character device (a terminal, a serial port), not a log: the order is `harness stream LOG PORT`",
+                     a.pos[0]);
+            return HX_EXIT_USAGE;
+        }
+    }
 
     loaded = hx_load_input(CMD, &a, a.pos[0], &log);
     if (loaded < 0) {
@@ -141,6 +171,10 @@ int hx_cmd_stream(int argc, char **argv)
         hx_error(CMD, "%s: no samples to send", a.pos[0]);
         hx_log_free(&log);
         return HX_EXIT_DATA;
+    }
+    if (hangup > 0 && (size_t)hangup > log.n) {
+        hx_warn(CMD, "--hangup-after %ld: %s has %zu samples, which end first, with the END frame", hangup, a.pos[0],
+                log.n);
     }
 
     memset(&tx, 0, sizeof tx);
@@ -172,7 +206,15 @@ int hx_cmd_stream(int argc, char **argv)
         fnav_wire_info_t info;
         memset(&info, 0, sizeof info);
         info.rate_hz = log.meta.rate_hz;
-        info.flags = (log.meta.rate_nominal ? FNAV_WIRE_INFO_RATE_NOMINAL : 0u) |
+        if (!(info.rate_hz >= 0.0 && info.rate_hz <= 1.0e6)) {
+            /* a rate the protocol refuses (stamps so dense they imply MHz):
+             * sent as 0, unknown, as the .bin writer stores it; a receiver
+             * refused the INFO frame and called the stream incomplete */
+            hx_warn(CMD, "%s: the log's rate %g Hz is beyond the wire protocol's 1e6 Hz; the INFO frame gives it as 0 "
+                    "(unknown), the samples keep their stamps", a.pos[0], info.rate_hz);
+            info.rate_hz = 0.0;
+        }
+        info.flags = (log.meta.rate_nominal && info.rate_hz > 0.0 ? FNAV_WIRE_INFO_RATE_NOMINAL : 0u) |
                      (log.meta.has_temp ? FNAV_WIRE_INFO_TEMP : 0u) | (log.meta.has_seq ? FNAV_WIRE_INFO_SEQ : 0u);
         snprintf(info.sensor, sizeof info.sensor, "%s", log.meta.sensor);
         snprintf(info.axes, sizeof info.axes, "%s", log.meta.axes);
@@ -202,6 +244,9 @@ int hx_cmd_stream(int argc, char **argv)
                 break;
             }
             sleep_until(due);
+            if (g_stop) {
+                break; /* a signal in the wait: this sample was not due yet */
+            }
         }
         memset(&s, 0, sizeof s);
         s.t_ns = log.t_ns[i];

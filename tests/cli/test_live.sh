@@ -922,15 +922,23 @@ grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was
 # ... and by SIGHUP (the terminal it runs in closes), as live handles it:
 # stream does not die of it, with no summary of what it had sent; 129 as for
 # any signal, 128 + its number
+# stream_signalled SIG LOG ARGS...: stream LOG to end B, signalled with SIG
+# after 1 s; its status in STREAM_RC
+stream_signalled() {
+    sig=$1
+    log=$2
+    shift 2
+    LD_PRELOAD=$SEAM "$H" stream "$log" "$B" "$@" >"$T/stream.out" 2>"$T/stream.err" &
+    STREAM=$!
+    sleep 1
+    kill -"$sig" "$STREAM" 2>/dev/null
+    wait "$STREAM"
+    STREAM_RC=$?
+    STREAM=""
+}
 stop_link
 start_link
-LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
-STREAM=$!
-sleep 1
-kill -HUP "$STREAM" 2>/dev/null
-wait "$STREAM"
-STREAM_RC=$?
-STREAM=""
+stream_signalled HUP vectors/walk.bin --speed 0
 expect_rc "$STREAM_RC" 129 "stream stopped by SIGHUP while its write is blocked"
 grep_in "$T/stream.out" "(interrupted)" "stream stopped by SIGHUP says what it sent"
 
@@ -975,6 +983,48 @@ else
     # interrupt did stop the stream before END, and 130 is right
     expect_rc "$STREAM_RC" 130 "stream interrupted before its END frame"
 fi
+stop_link
+
+# --- stream (the stream audit of 2026-12-06): a log whose stamps imply a
+# rate beyond the protocol's 1e6 Hz (read in us: 400 MHz) sends rate 0 in
+# its INFO frame, which the receiver takes (it refused the frame and called
+# the clean stream incomplete, exit 1)
+stop_link
+start_link
+start_live --timeout 5
+head -301 "$T/orig.csv" >"$T/s300.csv"
+stream "$T/s300.csv" --units time=us --speed 0
+wait_live
+expect_rc "$STREAM_RC" 0 "stream of a log read in us (a 400 MHz rate)"
+grep_in "$T/stream.err" "the log's rate 3.9863e+08 Hz is beyond the wire protocol's 1e6 Hz; the INFO frame gives it as 0" "stream says the rate is sent as unknown"
+expect_rc "$LIVE_RC" 0 "live takes its INFO frame"
+if grep -q "bad INFO frame" "$T/live.err"; then fail "the INFO frame was refused"; else pass "no bad INFO frame"; fi
+# a Ctrl-C in the wait for a sample not yet due sends nothing more (the
+# sample after a 3 s gap went out at once, 2 s early)
+{ head -101 "$T/orig.csv"; tail -n +102 "$T/orig.csv" | head -100 |
+    awk -F, -v OFS=, '{ $1 = $1 + 3; print }'; } >"$T/gap.csv"
+start_live --timeout 10
+stream_signalled INT "$T/gap.csv" --speed 1
+expect_rc "$STREAM_RC" 130 "stream interrupted in a 3 s gap"
+grep_in "$T/stream.out" "^stream: 100 samples sent to" "nothing after the gap was sent"
+stop_link
+wait_live
+start_link
+# a --speed whose wait overflows, or that underflows to 0, is refused (both played at full speed)
+for sp in 1e-22 1e-400; do
+    timeout $LIMIT "$H" stream "$T/s300.csv" "$B" --speed $sp >"$T/stream.out" 2>"$T/stream.err"
+    expect_rc $? 2 "stream --speed $sp"
+    grep_in "$T/stream.err" "give 0 (as fast as the port takes it) or at least 0.001" "--speed $sp: the message says what is allowed"
+done
+# the arguments swapped: a serial device as the log is refused, not read for ever
+LD_PRELOAD=$SEAM timeout 20 "$H" stream "$A" "$T/s300.csv" >"$T/stream.out" 2>"$T/stream.err"
+expect_rc $? 2 "stream PORT LOG (swapped)"
+grep_in "$T/stream.err" "is a character device (a terminal, a serial port), not a log: the order is" "the swap is named"
+# --hangup-after beyond the log: said (the END frame went out without a word)
+start_live --timeout 5
+stream "$T/s300.csv" --speed 0 --hangup-after 1000
+wait_live
+grep_in "$T/stream.err" "--hangup-after 1000: .* has 300 samples, which end first, with the END frame" "a hang-up beyond the log is said"
 stop_link
 
 if [ "$fails" -ne 0 ]; then
