@@ -148,6 +148,7 @@ typedef struct {
     struct {
         int64_t t_ns;
         unsigned fseq;
+        uint32_t epoch;           /* the sequence restarts before it */
     } acc[3];
     unsigned n_acc;
     /* samples stamped behind the held one, set aside: BACK_RUN_MAX of them
@@ -156,6 +157,7 @@ typedef struct {
         fnav_sample_t s;
         unsigned fseq;
         uint32_t crc;
+        uint32_t lost;            /* the link's lost frames when it came */
     } run[BACK_RUN_MAX];
     uint32_t restarts_at_last;    /* the decoder's true sequence restarts when the last sample was accepted */
     uint32_t bad_stamps;          /* samples dropped for a time stamp out of order (in bad_samples too) */
@@ -510,13 +512,13 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
  * (frames lost, samples refused) is a loss on the sender: reported and
  * counted, not passed in silence. Frames of other
  * types lost on the link are counted as samples, so this is a lower bound. */
-static void sensor_counter(live_t *L, const fnav_sample_t *s)
+static void sensor_counter(live_t *L, const fnav_sample_t *s, uint32_t lost_now, uint32_t bad_now)
 {
     const int counted = L->have_info && (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u &&
                         (s->flags & FNAV_SAMPLE_HAS_SEQ) != 0u;
     if (counted && L->have_sensor_seq) {
         const uint32_t step = s->seq - L->last_sample_seq;
-        const uint32_t link = (L->dec.stats.lost - L->lost_at_last) + (L->bad_samples - L->bad_at_last);
+        const uint32_t link = (lost_now - L->lost_at_last) + (bad_now - L->bad_at_last);
         if (step > 1u && step < 0x80000000u && step - 1u > link) {
             char msg[160];
             L->sensor_missing += step - 1u - link;
@@ -529,8 +531,8 @@ static void sensor_counter(live_t *L, const fnav_sample_t *s)
         }
     }
     L->have_sensor_seq = counted;
-    L->lost_at_last = L->dec.stats.lost;
-    L->bad_at_last = L->bad_samples;
+    L->lost_at_last = lost_now;
+    L->bad_at_last = bad_now;
 }
 
 /* A SAMPLE frame kept among the recent ones (a later copy of it is
@@ -546,9 +548,10 @@ static void remember(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t
 
 /* A sample taken: counted, and held back by one sample (live_t.held) while
  * the one held before is navigated and recorded. */
-static void accept_sample(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t *s)
+static void accept_sample_at(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t *s, uint32_t lost_now,
+                             uint32_t bad_now)
 {
-    sensor_counter(L, s);
+    sensor_counter(L, s, lost_now, bad_now);
     if (L->samples == 0u) {
         L->t_first_ns = s->t_ns;
     }
@@ -556,6 +559,7 @@ static void accept_sample(live_t *L, unsigned fseq, uint32_t crc, const fnav_sam
     L->acc[1] = L->acc[0];
     L->acc[0].t_ns = s->t_ns;
     L->acc[0].fseq = fseq;
+    L->acc[0].epoch = L->dec.stats.resets - L->seq_repeats;
     L->n_acc += L->n_acc < 3u;
     L->samples++;
     L->t_last_ns = s->t_ns;
@@ -570,6 +574,11 @@ static void accept_sample(live_t *L, unsigned fseq, uint32_t crc, const fnav_sam
     }
     L->held = *s;
     L->have_held = 1;
+}
+
+static void accept_sample(live_t *L, unsigned fseq, uint32_t crc, const fnav_sample_t *s)
+{
+    accept_sample_at(L, fseq, crc, s, L->dec.stats.lost, L->bad_samples);
 }
 
 /* The held sample dropped (stamped ahead): P becomes the last taken. */
@@ -612,21 +621,26 @@ static int in_sequence(const live_t *L, const fnav_sample_t *s)
  * INFO's period), H is the one out of order when s fits its frame distance
  * from P in intervals better than H fits its own (a stamp far ahead: 1000
  * s against 2.5 ms; the distances count the frames a link lost). */
+/* The interval per frame before P (ns): from P and the sample before it
+ * when no sequence restart lies between them, else the INFO's period; 0
+ * unknown. */
+static double frame_interval(const live_t *L)
+{
+    if (L->n_acc >= 3u && L->acc[1].epoch == L->acc[2].epoch) {
+        const unsigned d = (uint16_t)(L->acc[1].fseq - L->acc[2].fseq);
+        if (d > 0u && d < 0x8000u && L->acc[1].t_ns > L->acc[2].t_ns) {
+            return (double)(L->acc[1].t_ns - L->acc[2].t_ns) / (double)d;
+        }
+    }
+    return (L->have_info && L->info.rate_hz > 0.0) ? 1e9 / L->info.rate_hz : 0.0;
+}
+
 static int held_is_ahead(const live_t *L, const fnav_sample_t *s, unsigned fseq)
 {
-    double T = 0.0;
+    const double T = frame_interval(L);
     double n_s, n_h;
     if (!(L->have_held && L->n_acc >= 2u && s->t_ns >= L->acc[1].t_ns)) {
         return 0;
-    }
-    if (L->n_acc >= 3u) {
-        const unsigned d = (uint16_t)(L->acc[1].fseq - L->acc[2].fseq);
-        if (d > 0u && L->acc[1].t_ns > L->acc[2].t_ns) {
-            T = (double)(L->acc[1].t_ns - L->acc[2].t_ns) / (double)d;
-        }
-    }
-    if (!(T > 0.0) && L->have_info && L->info.rate_hz > 0.0) {
-        T = 1e9 / L->info.rate_hz;
     }
     n_s = (double)(uint16_t)(fseq - L->acc[1].fseq);
     n_h = (double)(uint16_t)(L->acc[0].fseq - L->acc[1].fseq);
@@ -647,6 +661,28 @@ static int run_after_p(const live_t *L)
     return L->have_held && (L->n_acc < 2u || L->run[0].s.t_ns >= L->acc[1].t_ns);
 }
 
+/* The held sample was stamped ahead of the back_run samples set aside
+ * after it: it is dropped and they are taken, each with the link's losses
+ * when it came (a frame lost among them is not the sender's). */
+static void take_back(live_t *L)
+{
+    char msg[240];
+    const uint32_t n = L->back_run;
+    uint32_t i, bad;
+    snprintf(msg, sizeof msg,
+             "bad time stamp: sample frame seq %u stamped %.6f s, ahead of the %u samples after it (from %.6f s), "
+             "which are taken back; it is skipped",
+             L->last_frame_seq, (double)L->t_last_ns * 1e-9, (unsigned)n, (double)L->run[0].s.t_ns * 1e-9);
+    warn_limited(L, msg);
+    L->bad_samples -= n - 1u; /* the run taken, the held one dropped */
+    L->bad_stamps -= n - 1u;
+    bad = L->bad_at_last;
+    drop_held(L);
+    for (i = 0; i < n; i++) {
+        accept_sample_at(L, L->run[i].fseq, L->run[i].crc, &L->run[i].s, L->run[i].lost, bad);
+    }
+}
+
 /* s stamped behind the held one H while the sender went on: H dropped (s
  * taken) when H is the one out of order (held_is_ahead), else s set aside.
  * BACK_RUN_MAX set aside in a row: when they rise after P, H was ahead of
@@ -657,7 +693,6 @@ static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sampl
 {
     char msg[240];
     const uint32_t crc = payload_crc(f);
-    unsigned i;
     L->bad_samples++;
     L->bad_stamps++;
     if (held_is_ahead(L, s, (unsigned)f->seq)) {
@@ -685,6 +720,7 @@ static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sampl
     L->run[L->back_run].s = *s;
     L->run[L->back_run].fseq = (unsigned)f->seq;
     L->run[L->back_run].crc = crc;
+    L->run[L->back_run].lost = L->dec.stats.lost;
     if (++L->back_run < BACK_RUN_MAX) {
         return;
     }
@@ -693,17 +729,7 @@ static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sampl
         L->clock_back = 1;
         return;
     }
-    snprintf(msg, sizeof msg,
-             "bad time stamp: sample frame seq %u stamped %.6f s, ahead of the %d samples after it (from %.6f s), "
-             "which are taken back; it is skipped",
-             L->last_frame_seq, (double)L->t_last_ns * 1e-9, BACK_RUN_MAX, (double)L->run[0].s.t_ns * 1e-9);
-    warn_limited(L, msg);
-    L->bad_samples -= BACK_RUN_MAX - 1u; /* the run taken, the held one dropped */
-    L->bad_stamps -= BACK_RUN_MAX - 1u;
-    drop_held(L);
-    for (i = 0; i < BACK_RUN_MAX; i++) {
-        accept_sample(L, L->run[i].fseq, L->run[i].crc, &L->run[i].s);
-    }
+    take_back(L);
 }
 
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
@@ -1219,6 +1245,13 @@ int hx_cmd_live(int argc, char **argv)
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L, g_stop && !gone && !timed_out);
+    if (L.back_run > 0u && run_after_p(&L) && (L.n_acc < 2u || !(frame_interval(&L) > 0.0))) {
+        /* the run ended (END, a signal) before BACK_RUN_MAX samples came
+         * behind a held sample that nothing before it could judge (the
+         * first, or no interval known): they rising after it, it was the
+         * one ahead */
+        take_back(&L);
+    }
     release_held(&L); /* the last sample taken, held back by one */
     /* how the run ended: a signal that comes later (while the last picture
      * is drawn) ends nothing, so the summary does not say "stopped by
@@ -1289,10 +1322,10 @@ int hx_cmd_live(int argc, char **argv)
         /* END counts the sender's samples since its own start: after a
          * restart of the frame sequence with the clock going on (the
          * session went on), those since the restart (which said so) */
+        /* (a sender counts since its own start: after a restart of the
+         * frame sequence those since, unless END counts them all exactly) */
         const uint32_t since = L.samples - L.samples_at_restart;
-        const double off_all = fabs((double)L.end_count - (double)L.samples);
-        const int end_since = L.have_end && L.have_seq_restart && since != L.samples &&
-                              fabs((double)L.end_count - (double)since) < off_all;
+        const int end_since = L.have_end && L.have_seq_restart && since != L.samples && L.end_count != L.samples;
         const uint32_t got = end_since ? since : L.samples;
         uint32_t missing = L.have_end && L.end_count > got ? L.end_count - got : 0u;
         uint32_t extra = L.have_end && got > L.end_count ? got - L.end_count : 0u;

@@ -513,6 +513,14 @@ live_case spike_first rec_sf.bin 5
 grep_in "$T/live.err" "bad time stamp: sample frame seq 1 stamped 1000.000000 s, ahead of the 8 samples after it (from 0.002500 s), which are taken back; it is skipped" "the first sample stamped ahead is found"
 grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the session goes on"
 reads_back rec_sf.bin 299 "the recording holds every other sample"
+# ... with a frame lost on the link among the samples taken back: not the sender's loss
+live_case firstahead_loss rec_fl.bin 5
+grep_in "$T/live.err" "ahead of the 8 samples after it (from 0.002500 s), which are taken back" "the first sample stamped ahead is found"
+if grep -q "sensor drop" "$T/live.err"; then fail "a link loss among the samples taken back called the sender's"; else pass "the link's loss stays the link's"; fi
+# ... and a run cut short by END: the 5 after it are taken back, the first dropped
+live_case firstahead_end rec_fe.bin 5
+grep_in "$T/live.err" "ahead of the 5 samples after it (from 0.002500 s), which are taken back" "a short run at END is taken back too"
+reads_back rec_fe.bin 5 "the recording holds the 5 good samples"
 # after frames lost on the link the intervals count the frames lost: the
 # early sample is the one dropped, not the one before it
 live_case loss_early rec_le.bin 5
@@ -531,6 +539,13 @@ reads_back rec_rb.bin 400 "the recording holds both"
 live_case reboot_lost rec_rbl.bin 5
 expect_rc "$LIVE_RC" 1 "live across a reboot, a frame lost after it"
 grep_in "$T/live.err" "incomplete: 1 frames lost, 0 corrupt frames, 0 bad samples, 0 bad INFO frames, 1 samples missing, 0 more than the sender sent" "the loss after the restart is counted against END (not '199 more than the sender sent')"
+# (few samples before the reboot, more lost after it: still counted since the restart)
+live_case reboot_short rec_rbs.bin 5
+grep_in "$T/live.err" "incomplete: 3 frames lost, 0 corrupt frames, 0 bad samples, 0 bad INFO frames, 3 samples missing, 0 more than the sender sent" "3 lost after a reboot that came early are 3 missing"
+# the interval across the restart (the reboot's second in it) is not the
+# sender's: the early stamp after the reboot is the one dropped
+live_case reboot_glitch rec_rbg.bin 5
+grep_in "$T/live.err" "bad time stamp: sample frame seq 3 stamped 1700000001.502000 s, behind the last sample's" "after a reboot the early stamp is the one dropped"
 
 # an INFO frame after the first sample (live joined a running sender) is
 # written into the recording's header at the end: its sensor, rate and

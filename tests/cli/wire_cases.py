@@ -39,6 +39,12 @@ usage: wire_cases.py CASE OUT
             frame seq 0, frames and counter from 0 again, its clock going on
             1 s later), 200 samples and an END counting those 200
   reboot_lost the same, frame 50 after the reboot lost on the link
+  reboot_short 5 samples, the reboot, 400 samples of which 3 are lost on the
+            link, END 400
+  reboot_glitch the reboot case, the third sample after it stamped 3 ms early
+  firstahead_loss INFO at rate 0 (counter flag), the first sample stamped
+            1000 s ahead, 299 more with frame 5 lost on the link, END
+  firstahead_end the first sample stamped 1000 s ahead, 5 more, END
 """
 import math
 import os
@@ -172,13 +178,27 @@ def main():
         b += b''.join(frame(SAMPLE, 2 + k, still(k)) for k in range(100, 200)) + end(202, 200)
     elif case == 'ctlname':
         b = info(400.0, 4, 'IMU\n"x"\x1b[2J') + samples(300) + end(301, 300)
-    elif case in ('reboot', 'reboot_lost'):
+    elif case in ('reboot', 'reboot_lost', 'reboot_short', 'reboot_glitch'):
         t0 = 1700000000 * 10**9
-        b = info(400.0) + samples(200, 1, t0)
-        fr = [frame(SAMPLE, k + 1, still(k, t0 + 200 * DT_NS + 10**9)) for k in range(200)]
+        n0, n1 = (5, 400) if case == 'reboot_short' else (200, 200)
+        b = info(400.0) + samples(n0, 1, t0)
+        t1 = t0 + n0 * DT_NS + 10**9
+        fr = []
+        for k in range(n1):
+            t = t1 + k * DT_NS - (3000000 if case == 'reboot_glitch' and k == 2 else 0)
+            fr.append(frame(SAMPLE, k + 1, sample_payload(t, k, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)))
         if case == 'reboot_lost':
             del fr[49]
-        b += info(400.0) + b''.join(fr) + end(201, 200)
+        elif case == 'reboot_short':
+            del fr[100:103]
+        b += info(400.0) + b''.join(fr) + end(n1 + 1, n1)
+    elif case in ('firstahead_loss', 'firstahead_end'):
+        n = 300 if case == 'firstahead_loss' else 6
+        fr = [frame(SAMPLE, k + 1, sample_payload(k * DT_NS + (1000 * 10**9 if k == 0 else 0), k, 2,
+                                                  (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)) for k in range(n)]
+        if case == 'firstahead_loss':
+            del fr[4]
+        b = (info(0.0) if case == 'firstahead_loss' else b'') + b''.join(fr) + end(n + 1, n)
     else:
         sys.exit('unknown case ' + case)
     with open(out, 'wb') as f:
