@@ -615,12 +615,6 @@ static int in_sequence(const live_t *L, const fnav_sample_t *s)
     return L->dec.stats.resets - L->seq_repeats == L->restarts_at_last && (!counted || (step >= 1u && step < 0x80000000u));
 }
 
-/* A sample s (frame seq fseq) stamped behind the held one H while the
- * sender went on. When it lies after P, the sample before H, either H is
- * stamped late or s early: with T the interval per frame before P (or the
- * INFO's period), H is the one out of order when s fits its frame distance
- * from P in intervals better than H fits its own (a stamp far ahead: 1000
- * s against 2.5 ms; the distances count the frames a link lost). */
 /* The interval per frame before P (ns): from P and the sample before it
  * when no sequence restart lies between them, else the INFO's period; 0
  * unknown. */
@@ -635,6 +629,12 @@ static double frame_interval(const live_t *L)
     return (L->have_info && L->info.rate_hz > 0.0) ? 1e9 / L->info.rate_hz : 0.0;
 }
 
+/* A sample s (frame seq fseq) stamped behind the held one H while the
+ * sender went on. When it lies after P, the sample before H, either H is
+ * stamped late or s early: with T the interval per frame before P (or the
+ * INFO's period), H is the one out of order when s fits its frame distance
+ * from P in intervals better than H fits its own (a stamp far ahead: 1000
+ * s against 2.5 ms; the distances count the frames a link lost). */
 static int held_is_ahead(const live_t *L, const fnav_sample_t *s, unsigned fseq)
 {
     const double T = frame_interval(L);
