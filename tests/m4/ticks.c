@@ -139,11 +139,29 @@ static int64_t cost_ns(int64_t (*volatile f)(void), uint32_t n)
     return fnav_cm_ticks_ns() - t0;
 }
 
+/* One line: what @p f costs more than @p empty per call, over 10000 calls
+ * each (head, the figure, mid, both totals, tail). */
+static void report_cost(const char *head, int64_t (*f)(void), int64_t (*empty)(void), const char *mid,
+                        const char *tail)
+{
+    fnav_cm_line_t l;
+    const int64_t c_f = cost_ns(f, 10000u), c_empty = cost_ns(empty, 10000u);
+    fnav_cm_line_start(&l);
+    fnav_cm_line_str(&l, head);
+    fnav_cm_line_fix(&l, (c_f - c_empty) / 10, 3);
+    fnav_cm_line_str(&l, mid);
+    fnav_cm_line_i64(&l, c_f);
+    fnav_cm_line_str(&l, " and ");
+    fnav_cm_line_i64(&l, c_empty);
+    fnav_cm_line_str(&l, tail);
+    fnav_cm_line_end(&l);
+}
+
 int main(void)
 {
     fnav_cm_line_t l;
     uint32_t i, wraps = 0, wraps_after;
-    int64_t t_end, c_stamp, c_empty;
+    int64_t t_end;
     uint32_t mism;
     int ms_ok;
     fnav_cm_systick_start(25000000u); /* writes CVR: COUNTFLAG clear */
@@ -192,29 +210,11 @@ int main(void)
     fnav_cm_line_str(&l, " mismatches");
     fnav_cm_line_end(&l);
     /* the cost of a stamp, reported only (docs/firmware.md, "SysTick") */
-    c_stamp = cost_ns(fnav_cm_ticks_ns, 10000u);
-    c_empty = cost_ns(empty_stamp, 10000u);
-    fnav_cm_line_start(&l);
-    fnav_cm_line_str(&l, "ticks: fnav_cm_ticks_ns() costs ");
-    fnav_cm_line_fix(&l, (c_stamp - c_empty) / 10, 3);
-    fnav_cm_line_str(&l, " instructions per call more than an empty function (10000 calls: ");
-    fnav_cm_line_i64(&l, c_stamp);
-    fnav_cm_line_str(&l, " and ");
-    fnav_cm_line_i64(&l, c_empty);
-    fnav_cm_line_str(&l, " ns at 1 instruction per ns)");
-    fnav_cm_line_end(&l);
+    report_cost("ticks: fnav_cm_ticks_ns() costs ", fnav_cm_ticks_ns, empty_stamp,
+                " instructions per call more than an empty function (10000 calls: ", " ns at 1 instruction per ns)");
     /* a FIFO batch's per-sample stamp, reported only (docs/firmware.md,
      * "Time stamps from a board") */
-    c_stamp = cost_ns(batch_stamp, 10000u);
-    c_empty = cost_ns(batch_empty, 10000u);
-    fnav_cm_line_start(&l);
-    fnav_cm_line_str(&l, "ticks: fnav_cm_batch_stamp() costs ");
-    fnav_cm_line_fix(&l, (c_stamp - c_empty) / 10, 3);
-    fnav_cm_line_str(&l, " instructions per sample more than reading its inputs (batches of 8; 10000 calls: ");
-    fnav_cm_line_i64(&l, c_stamp);
-    fnav_cm_line_str(&l, " and ");
-    fnav_cm_line_i64(&l, c_empty);
-    fnav_cm_line_str(&l, " ns)");
-    fnav_cm_line_end(&l);
+    report_cost("ticks: fnav_cm_batch_stamp() costs ", batch_stamp, batch_empty,
+                " instructions per sample more than reading its inputs (batches of 8; 10000 calls: ", " ns)");
     fnav_cm_sh_exit(g_back_bad == 0u && mism == 0u && g_calls == 100000u && wraps >= MIN_WRAPS && ms_ok ? 0 : 1);
 }
