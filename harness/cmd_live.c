@@ -327,22 +327,24 @@ static uint32_t payload_crc(const fnav_wire_frame_t *f)
  * (its frame seq, time and counter, and the same bytes: a sender restarted
  * within RECENT_N samples, stamping from its sample counter, sends the same
  * keys with other values, which are no copy), received again. */
-static int recent_copy(const live_t *L, const fnav_wire_frame_t *f)
+static int recent_has(const live_t *L, unsigned fseq, const fnav_sample_t *s, uint32_t crc)
 {
-    fnav_sample_t s;
     unsigned k, n = L->n_recent < RECENT_N ? L->n_recent : RECENT_N;
-    uint32_t crc;
-    if (f->type != FNAV_WIRE_SAMPLE || fnav_wire_parse_sample(f, &s) != FNAV_OK) {
-        return 0;
-    }
-    crc = payload_crc(f);
     for (k = 0; k < n; k++) {
-        if (L->recent[k].frame_seq == (unsigned)f->seq && L->recent[k].t_ns == s.t_ns && L->recent[k].seq == s.seq &&
+        if (L->recent[k].frame_seq == fseq && L->recent[k].t_ns == s->t_ns && L->recent[k].seq == s->seq &&
             L->recent[k].crc == crc) {
             return 1;
         }
     }
     return 0;
+}
+
+/* recent_has for a frame of any type (the decoder's sequence restarts) */
+static int recent_copy(const live_t *L, const fnav_wire_frame_t *f)
+{
+    fnav_sample_t s;
+    return f->type == FNAV_WIRE_SAMPLE && fnav_wire_parse_sample(f, &s) == FNAV_OK &&
+           recent_has(L, (unsigned)f->seq, &s, payload_crc(f));
 }
 
 /* Report what the decoder's counters say happened since the last frame. */
@@ -689,10 +691,9 @@ static void take_back(live_t *L)
  * them all (the first sample stamped ahead, no P to judge by; a link's
  * loss before it): H is dropped and they are taken back; otherwise the
  * sender's clock went back, which ends the session as a restart does. */
-static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s)
+static void out_of_order(live_t *L, const fnav_wire_frame_t *f, const fnav_sample_t *s, uint32_t crc)
 {
     char msg[240];
-    const uint32_t crc = payload_crc(f);
     L->bad_samples++;
     L->bad_stamps++;
     if (held_is_ahead(L, s, (unsigned)f->seq)) {
@@ -740,13 +741,15 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     case FNAV_WIRE_SAMPLE: {
         fnav_sample_t s;
         fnav_status_t st = fnav_wire_parse_sample(f, &s);
+        uint32_t crc = 0u;
         if (st == FNAV_OK) {
             /* what the navigator and the .bin reader refuse, refused on
              * arrival so that the recording stays readable to its end */
             st = fnav_sample_check(&s);
+            crc = payload_crc(f); /* a copy is the same bytes */
         }
         if (st == FNAV_OK && L->samples > 0u && (unsigned)f->seq == L->last_frame_seq && s.t_ns == L->t_last_ns &&
-            s.seq == L->last_sample_seq && payload_crc(f) == L->last_crc) {
+            s.seq == L->last_sample_seq && crc == L->last_crc) {
             /* the same frame again (a sender's or a link's repetition): one
              * sample, not two with dt = 0 (a sensor's own duplicate comes in
              * a frame of its own, with the next frame seq) */
@@ -755,7 +758,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             snprintf(msg, sizeof msg, "repeated frame: sample frame seq %u received twice; the copy skipped",
                      (unsigned)f->seq);
             warn_limited(L, msg);
-        } else if (st == FNAV_OK && L->samples > 0u && recent_copy(L, f)) {
+        } else if (st == FNAV_OK && L->samples > 0u && recent_has(L, (unsigned)f->seq, &s, crc)) {
             /* a copy of an earlier frame arriving late (a link's stale
              * repetition): its time goes back, but it is no restart, which
              * would end the run with the rest of the session lost (the live
@@ -772,7 +775,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             /* time back with the frame sequence (and the sensor's counter)
              * going on: a stamp out of order, not a restart (one stamp 0.5
              * ms early ended the session: the live audit of 2026-12-06) */
-            out_of_order(L, f, &s);
+            out_of_order(L, f, &s, crc);
         } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session
              * ends here, with the recording readable to this point */
@@ -781,7 +784,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_to_s = (double)s.t_ns * 1e-9;
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
-            accept_sample(L, (unsigned)f->seq, payload_crc(f), &s);
+            accept_sample(L, (unsigned)f->seq, crc, &s);
         } else {
             char msg[160];
             L->bad_samples++;
