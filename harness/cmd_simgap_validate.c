@@ -1,6 +1,7 @@
 /* harness simgap-validate: the sim-to-real gap diagnosis on simulated cases
  * whose effect is withheld, scored afterwards (docs/simgap.md,
  * docs/simgap-validation.md). */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -176,11 +177,16 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     if (md != NULL) {
         FILE *f = fopen(md, "w");
         if (f == NULL) {
-            hx_error("simgap-validate", "cannot write %s", md);
+            hx_error("simgap-validate", "cannot write %s (%s)", md, strerror(errno));
             status = HX_EXIT_IO;
         } else {
+            int failed;
+            errno = 0;
             sgv_report(f, &o, cases, (int)n, 1, t0);
-            if (fclose(f) != 0) {
+            failed = ferror(f) != 0;
+            if (fclose(f) != 0 || failed) {
+                /* the report's write failed (a full disk): said, not exit 3 alone */
+                hx_error("simgap-validate", "%s: write failed (%s)", md, strerror(errno != 0 ? errno : EIO));
                 status = HX_EXIT_IO;
             }
         }

@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #define HX_LINE_MAX 4096
@@ -3375,6 +3377,145 @@ hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n
     return HX_HEAD_TEXT;
 }
 
+/* A pipe's copy (hx_gzopen_input): the path it was read from and the
+ * unlinked temporary file that holds its bytes, open until the end */
+enum { SPOOL_MAX = 4 };
+static struct {
+    char path[4096];
+    int fd;
+} g_spool[SPOOL_MAX];
+static int g_spool_n = 0;
+
+/* the bytes of the pipe at path into an unlinked temporary file: its fd, or
+ * -1 with err filled */
+static int spool_pipe(const char *path, char *err, size_t err_size)
+{
+    static char buf[1 << 16];
+    FILE *tmp;
+    int in, fd;
+    if (g_spool_n == SPOOL_MAX || strlen(path) >= sizeof g_spool[0].path) {
+        snprintf(err, err_size, "%s: a pipe, and no room left to copy it (give a file)", path);
+        return -1;
+    }
+    in = open(path, O_RDONLY);
+    if (in < 0) {
+        snprintf(err, err_size, "%s: cannot open (%s)", path, strerror(errno));
+        return -1;
+    }
+    tmp = tmpfile();
+    if (tmp == NULL) {
+        snprintf(err, err_size, "%s: a pipe, read through a temporary file, which cannot be made (%s)", path,
+                 strerror(errno));
+        close(in);
+        return -1;
+    }
+    fd = fileno(tmp);
+    for (;;) {
+        const ssize_t got = read(in, buf, sizeof buf);
+        ssize_t off = 0;
+        if (got == 0) {
+            break;
+        }
+        if (got < 0) {
+            if (errno == EINTR) {
+                continue;
+            }
+            snprintf(err, err_size, "%s: read error (%s)", path, strerror(errno));
+            close(in);
+            fclose(tmp);
+            return -1;
+        }
+        while (off < got) {
+            const ssize_t put = write(fd, buf + off, (size_t)(got - off));
+            if (put < 0 && errno == EINTR) {
+                continue;
+            }
+            if (put <= 0) {
+                snprintf(err, err_size, "%s: a pipe, read through a temporary file, which cannot be written (%s)",
+                         path, put < 0 ? strerror(errno) : "no space");
+                close(in);
+                fclose(tmp);
+                return -1;
+            }
+            off += put;
+        }
+    }
+    close(in);
+    /* tmp stays open (its FILE with it) until the process ends: the
+     * readers open the path again */
+    copy_str(g_spool[g_spool_n].path, sizeof g_spool[0].path, path);
+    g_spool[g_spool_n].fd = fd;
+    g_spool_n++;
+    return fd;
+}
+
+gzFile hx_gzopen_input(const char *path, char *err, size_t err_size)
+{
+    struct stat st, null_st;
+    gzFile gz;
+    int k, fd = -1;
+    for (k = 0; k < g_spool_n; k++) {
+        if (strcmp(g_spool[k].path, path) == 0) {
+            fd = g_spool[k].fd;
+        }
+    }
+    if (fd < 0 && stat(path, &st) == 0) {
+        if (S_ISCHR(st.st_mode) &&
+            !(stat("/dev/null", &null_st) == 0 && S_ISCHR(null_st.st_mode) && null_st.st_rdev == st.st_rdev)) {
+            snprintf(err, err_size, "%s: a character device (a terminal, a serial port), not a log file (a serial "
+                                    "port is read by `harness live`)", path);
+            return NULL;
+        }
+        if (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) {
+            fd = spool_pipe(path, err, err_size);
+            if (fd < 0) {
+                return NULL;
+            }
+        }
+    }
+    if (fd >= 0) {
+        /* a reader of its own with its own offset (a dup() would share
+         * one: the rate's estimate reads the start while the reader is
+         * open) */
+        char self[64];
+        int own;
+        snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+        own = open(self, O_RDONLY);
+        if (own < 0) {
+            snprintf(err, err_size, "%s: a pipe, whose copy cannot be read again (%s: %s)", path, self,
+                     strerror(errno));
+            return NULL;
+        }
+        gz = gzdopen(own, "rb");
+        if (gz == NULL) {
+            close(own);
+        }
+    } else {
+        errno = 0;
+        gz = gzopen(path, "rb");
+    }
+    if (gz == NULL) {
+        snprintf(err, err_size, "%s: cannot open (%s)", path, errno ? strerror(errno) : "gzopen failed");
+    }
+    return gz;
+}
+
+/* fopen(path, "rb") of a log's raw bytes (the .gz trailer checks), its
+ * copy for a pipe hx_gzopen_input has read (a second open of the pipe
+ * would wait for a writer for ever) */
+static FILE *fopen_input(const char *path)
+{
+    int k;
+    for (k = 0; k < g_spool_n; k++) {
+        if (strcmp(g_spool[k].path, path) == 0) {
+            char self[64];
+            snprintf(self, sizeof self, "/proc/self/fd/%d", g_spool[k].fd);
+            return fopen(self, "rb");
+        }
+    }
+    return fopen(path, "rb");
+}
+
 static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r;
@@ -3393,9 +3534,8 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     }
     r->date_join = -1;
     copy_str(r->path, sizeof r->path, path);
-    r->gz = gzopen(path, "rb");
+    r->gz = hx_gzopen_input(path, err, err_size);
     if (r->gz == NULL) {
-        snprintf(err, err_size, "%s: cannot open (%s)", path, errno ? strerror(errno) : "gzopen failed");
         free(r);
         return NULL;
     }
@@ -4214,7 +4354,7 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
 static int gz_isize_ends(const char *path, unsigned long size)
 {
     unsigned char t[4];
-    FILE *f = fopen(path, "rb");
+    FILE *f = fopen_input(path);
     int ok;
     if (f == NULL) {
         return 0;
@@ -4236,7 +4376,7 @@ static long gz_trailing_bytes(const char *path, int *zeros)
 {
     enum { IN_SIZE = 1 << 14, OUT_SIZE = 1 << 15 };
     unsigned char *const in = (unsigned char *)malloc(IN_SIZE + OUT_SIZE), *const out = in + IN_SIZE;
-    FILE *f = in != NULL ? fopen(path, "rb") : NULL;
+    FILE *f = in != NULL ? fopen_input(path) : NULL;
     z_stream zs;
     long member_end = 0, size, left = -1;
     if (f == NULL) {
@@ -5080,7 +5220,8 @@ hx_format_t hx_detect_file(const char *path)
 {
     unsigned char head[600];
     int got;
-    gzFile gz = gzopen(path, "rb");
+    char err[HX_ERR_SIZE];
+    gzFile gz = hx_gzopen_input(path, err, sizeof err);
     if (gz == NULL) {
         return HX_FMT_AUTO;
     }

@@ -195,6 +195,15 @@ const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf);
  *  and, but for a .bin (no text), "give --from csv". path NULL: none. */
 void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
                        int detected);
+/** Open a log for reading with zlib, as gzopen(path, "rb") but for a pipe:
+ *  a FIFO or a socket (`harness replay <(ssh host cat log)`, /dev/stdin
+ *  from a pipe) is copied once into an unlinked temporary file, which
+ *  every later open of the same path reads again (the readers read a log
+ *  more than once: detection, the rate's estimate, the loader's count). A
+ *  character device but /dev/null (a terminal, a serial port) is refused:
+ *  it would be read for ever. NULL with err filled ("PATH: ...") on
+ *  failure. */
+gzFile hx_gzopen_input(const char *path, char *err, size_t err_size);
 /** The format detection gives a file's content (HX_FMT_AUTO: unreadable). */
 hx_format_t hx_detect_file(const char *path);
 

@@ -425,9 +425,8 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         say(err, err_size, "%s: out of memory", path);
         return -1;
     }
-    t->gz = gzopen(path, "rb");
+    t->gz = hx_gzopen_input(path, err, err_size);
     if (t->gz == NULL) {
-        say(err, err_size, "%s: cannot open (%s)", path, strerror(errno != 0 ? errno : ENOENT));
         free(t);
         return -1;
     }
@@ -440,7 +439,12 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
             free(t);
             return -1;
         }
-        gzrewind(t->gz);
+        if (gzrewind(t->gz) != 0) {
+            say(err, err_size, "%s: cannot read its start again", path);
+            gzclose(t->gz);
+            free(t);
+            return -1;
+        }
     }
     /* the header: the first line that is neither blank nor a '#' comment */
     for (;;) {

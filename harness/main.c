@@ -79,6 +79,10 @@ int main(int argc, char **argv)
      * command checks and reports (exit 1), never as SIGABRT */
     gsl_set_error_handler_off();
     signal(SIGPIPE, SIG_IGN); /* a closed pipe is a write error (below), as in live and stream */
+    /* a file-size limit (ulimit -f) reached is a write error too (EFBIG,
+     * exit 3 naming the file): SIGXFSZ killed the process without a word,
+     * its other outputs not written */
+    signal(SIGXFSZ, SIG_IGN);
     if (argc < 2) {
         usage(stderr);
         return HX_EXIT_USAGE;

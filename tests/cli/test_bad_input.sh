@@ -177,7 +177,19 @@ if [ -w /dev/full ]; then
     expect_exit 3 "info --json onto a full disk" "$H" info vectors/walk.bin --json /dev/full
     expect_err "^harness info: error: cannot write /dev/full (No space left on device)" "info --json: the reason given"
     expect_out "^samples     16539" "info: the report still printed"
+    # simgap-validate's --markdown onto a full disk: exit 3 without a word
+    expect_exit 3 "simgap-validate --markdown onto a full disk" "$H" simgap-validate --cases 1 --duration 60 --seeds 4 \
+        --quiet --markdown /dev/full
+    expect_err "^harness simgap-validate: error: /dev/full: write failed (No space left on device)" \
+        "simgap-validate --markdown: the failed write said"
 fi
+# a file-size limit (ulimit -f) reached: SIGXFSZ killed replay without a
+# word (exit 153), its JSON not written; now the write fails (EFBIG), named,
+# exit 3, and the JSON written with what was done
+expect_exit 3 "replay --out past a file-size limit" sh -c 'ulimit -f 100 && exec "$@"' sh "$H" replay vectors/walk.bin \
+    --quiet --out "$T/fsz.csv" --json "$T/fsz.json"
+expect_err "^harness replay: error: cannot write the trajectory to $T/fsz.csv (File too large)" "... the limit named"
+json "$T/fsz.json" 'j["complete"] is False' && pass "... the JSON written, incomplete" || fail "... no incomplete JSON"
 
 # --- replay of a log whose time stamps come in pairs (intervals of 0.1 ms
 # and 9.9 ms by turns: a logger stamping each pair of 200 Hz samples as it

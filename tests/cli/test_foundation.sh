@@ -962,5 +962,39 @@ expect_err "names matched: --columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_
 expect_exit 0 "... with --input-rate" "$H" info "$T/nnot.csv" --input-rate 100
 expect_out "samples     400" "no time, --input-rate: read"
 
+# a log from a pipe (a FIFO here, as `<(...)` and /dev/stdin from a pipe
+# are): copied once and read as the file (the readers read a log twice:
+# "cannot rewind" before); merge's two files too (it read the header from
+# byte 513 on: "the header names no accelerometer axis"); a character
+# device is no log file (docs/harness.md, "A log from a pipe")
+fifo_feed() { # FIFO FILE: FILE written into FIFO in the background ($feed_pid)
+    rm -f "$1"; mkfifo "$1" && { cat "$2" > "$1" & feed_pid=$!; }
+}
+fifo_done() { kill "$feed_pid" 2>/dev/null; wait "$feed_pid" 2>/dev/null; }
+expect_exit 0 "replay of the walk from the file" "$H" replay vectors/walk.bin --quiet --out "$T/file.csv"
+fifo_feed "$T/fifo" vectors/walk.bin
+expect_exit 0 "replay of the walk from a pipe" timeout 60 "$H" replay "$T/fifo" --quiet --out "$T/fifo.csv"
+fifo_done
+if cmp -s "$T/file.csv" "$T/fifo.csv"; then pass "... the same trajectory"; else fail "... the trajectory differs"; fi
+expect_exit 0 "walk.bin to CSV for a .gz" "$H" convert vectors/walk.bin "$T/pw.csv"
+gzip -c "$T/pw.csv" > "$T/pw.csv.gz"
+fifo_feed "$T/fifo" "$T/pw.csv.gz"
+expect_exit 0 "info of a gzip'd CSV from a pipe" timeout 60 "$H" info "$T/fifo"
+fifo_done
+expect_out "samples     16539" "... every sample read"
+awk -F, '/^#/ || NR == 1 { print; next } { print $1 "," $2 "," $3 "," $4 }' "$T/pw.csv" > "$T/pacc.csv"
+awk -F, '/^#/ || NR == 1 { print; next } { print $1 "," $5 "," $6 "," $7 }' "$T/pw.csv" > "$T/pgyr.csv"
+sed -i '/^#/!{1s/.*/t,x,y,z/}' "$T/pacc.csv" "$T/pgyr.csv"
+expect_exit 0 "merge of two files" "$H" merge "$T/pacc.csv" "$T/pgyr.csv" "$T/pm_file.csv" --units time=s,accel=m/s2,gyro=rad/s
+fifo_feed "$T/fifo" "$T/pacc.csv"; p1=$feed_pid
+fifo_feed "$T/fifo2" "$T/pgyr.csv"
+expect_exit 0 "merge of two pipes" timeout 60 "$H" merge "$T/fifo" "$T/fifo2" "$T/pm_fifo.csv" --units time=s,accel=m/s2,gyro=rad/s
+fifo_done; feed_pid=$p1; fifo_done
+if cmp -s "$T/pm_file.csv" "$T/pm_fifo.csv"; then pass "... the same log"; else fail "... the merged logs differ"; fi
+expect_exit 1 "a character device as the log" "$H" info /dev/zero
+expect_err "/dev/zero: a character device (a terminal, a serial port), not a log file" "... named"
+expect_exit 1 "/dev/null as the log" "$H" info /dev/null
+expect_err "/dev/null: empty file" "... is an empty file"
+
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
