@@ -9,7 +9,10 @@
 #include <string.h>
 #include <errno.h>
 #include <limits.h>
+#include <signal.h>
+#include <stdio.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -1742,6 +1745,69 @@ static void figure(ev_t *ev, const char *name, int strides, const char *title, c
     hx_evplot_free(&ev->fig);
 }
 
+/* The report is written into OUT.part beside OUT and renamed onto it at
+ * a clean end: an eval stopped by Ctrl-C or a full disk emptied the
+ * tracked docs/results.md (fopen "w" before the runs). A signal removes
+ * the part written (the handler: unlink, then the signal's own action) */
+static char g_md_part[PATH_MAX + 8];
+
+static void md_part_signal(int sig)
+{
+    if (g_md_part[0] != '\0') {
+        (void)unlink(g_md_part);
+    }
+    (void)signal(sig, SIG_DFL);
+    (void)raise(sig);
+}
+
+/* the file to write the report into (OUT itself when it is no regular file
+ * or name too long for the part's: /dev/null, a terminal); path the name
+ * of the one renamed onto at the end (a symlink's target) */
+static FILE *md_open(const char *out_path, char *path, size_t path_size)
+{
+    struct stat st;
+    FILE *f;
+    const int exists = stat(out_path, &st) == 0;
+    if ((exists && !S_ISREG(st.st_mode)) || strlen(out_path) >= path_size) {
+        return fopen(out_path, "w");
+    }
+    if (exists && realpath(out_path, path) != NULL && strlen(path) + 5 < sizeof g_md_part) {
+        /* a symlink: its target replaced, not the link by a file */
+    } else {
+        snprintf(path, path_size, "%s", out_path);
+    }
+    snprintf(g_md_part, sizeof g_md_part, "%s.part", path);
+    f = fopen(g_md_part, "w");
+    if (f == NULL) {
+        g_md_part[0] = '\0';
+        return NULL;
+    }
+    (void)signal(SIGINT, md_part_signal);
+    (void)signal(SIGTERM, md_part_signal);
+    (void)signal(SIGHUP, md_part_signal);
+    return f;
+}
+
+/* the part written renamed onto path (ok), or removed; 0 or the errno */
+static int md_finish(const char *path, int ok)
+{
+    int e = 0;
+    if (g_md_part[0] == '\0') {
+        return 0;
+    }
+    (void)signal(SIGINT, SIG_DFL);
+    (void)signal(SIGTERM, SIG_DFL);
+    (void)signal(SIGHUP, SIG_DFL);
+    if (ok && rename(g_md_part, path) != 0) {
+        e = errno;
+    }
+    if (!ok || e != 0) {
+        (void)unlink(g_md_part);
+    }
+    g_md_part[0] = '\0';
+    return e;
+}
+
 int hx_cmd_eval(int argc, char **argv)
 {
     hx_args_t a;
@@ -1749,6 +1815,7 @@ int hx_cmd_eval(int argc, char **argv)
     ev_t ev;
     char err[HX_ERR_SIZE], cmdline[1024], zupt_run[96];
     const char *out_path, *json_path, *data;
+    char md_path[PATH_MAX + 1];
     closure_t gx2, gx2_200, gx2_100;
     double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
     ev_name_t *xio;
@@ -1962,7 +2029,7 @@ int hx_cmd_eval(int argc, char **argv)
             ev.total_runs += 8 * (ngx2 + nfp + nvi + nxio) + 2 * (ngx2 + nxio + nother) + nfp;
         }
     }
-    ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
+    ev.md = strcmp(out_path, "-") == 0 ? stdout : md_open(out_path, md_path, sizeof md_path);
     if (ev.md == NULL) {
         hx_error("eval", "cannot write %s (%s)", out_path, strerror(errno));
         free(xio);
@@ -2439,8 +2506,11 @@ int hx_cmd_eval(int argc, char **argv)
          * it without a reason) */
         const int werr = ferror(ev.md);
         const int cerr = fclose(ev.md) != 0 ? errno : 0;
-        if (werr || cerr != 0) {
-            hx_error("eval", "cannot write %s (%s)", out_path, strerror(cerr != 0 ? cerr : EIO));
+        const int rerr = md_finish(md_path, !werr && cerr == 0);
+        if (werr || cerr != 0 || rerr != 0) {
+            /* the previous report left as it was */
+            hx_error("eval", "cannot write %s (%s)", out_path,
+                     strerror(cerr != 0 ? cerr : rerr != 0 ? rerr : EIO));
             md_failed = 1;
         }
     }

@@ -29,6 +29,24 @@ rows=$(grep -c "^| Measurement_2000_[0-9]* | - |" "$T/many.md")
 if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; then
     pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
 
+# --- eval stopped (SIGTERM; Ctrl-C is SIGINT) or failing on the way left
+# its --out empty or cut: `fopen "w"` before the runs emptied the tracked
+# docs/results.md. The report is written beside it and renamed at the
+# end: the previous report stays whole, no part is left
+cp "$T/many.md" "$T/keep.md"
+"$H" eval --data "$T/many" --out "$T/keep.md" >/dev/null 2>&1 &
+ev_pid=$!
+sleep 2
+if kill -TERM "$ev_pid" 2>/dev/null; then
+    wait "$ev_pid"; ev_rc=$?
+    [ "$ev_rc" -eq 143 ] && pass "eval stopped by SIGTERM: exit 143" || fail "eval stopped by SIGTERM: exit $ev_rc"
+    cmp -s "$T/many.md" "$T/keep.md" && pass "... the previous report kept whole" || fail "... the previous report changed ($(wc -c < "$T/keep.md") bytes)"
+    [ -e "$T/keep.md.part" ] && fail "... its part left behind" || pass "... no part left behind"
+else
+    wait "$ev_pid"
+    echo "SKIP eval stopped by SIGTERM: it ended within 2 s"
+fi
+
 # --- a walk read to its end on which the filter never aligned (it moves
 # throughout) is a failed run for that reason: its row must not say "input
 # ends early (... no still period ...): the walk was read only in part"
