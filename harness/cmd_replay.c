@@ -220,13 +220,20 @@ int hx_cmd_replay(int argc, char **argv)
     if (strides_path != NULL) {
         /* after the run: a stride's length needs the stance after it */
         const int to_stdout = strcmp(strides_path, "-") == 0;
-        FILE *sf = to_stdout ? stdout : fopen(strides_path, "w");
-        int bad = sf == NULL || hx_nav_write_strides(sf, &traj) != 0;
+        FILE *sf;
+        int bad, e;
+        char why[160];
+        errno = 0;
+        sf = to_stdout ? stdout : fopen(strides_path, "w");
+        bad = sf == NULL || hx_nav_write_strides(sf, &traj) != 0;
+        e = bad ? errno : 0; /* the reason of the first failure: a full disk is more than "cannot write" */
         if (sf != NULL && (to_stdout ? fflush(sf) != 0 || ferror(sf) : fclose(sf) != 0)) {
+            e = bad ? e : errno;
             bad = 1;
         }
         if (bad) {
-            hx_error("replay", "cannot write the strides to %s%s", to_stdout ? "standard output" : strides_path,
+            hx_error("replay", "cannot write the strides to %s%s%s", to_stdout ? "standard output" : strides_path,
+                     hx_errno_note(traj.events ? e : 0, why, sizeof why),
                      traj.events ? ""
                                  : " (the detector's events were not kept: out of memory, or its outputs "
                                    "disagreed with the navigator's frames)");

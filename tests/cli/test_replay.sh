@@ -949,6 +949,9 @@ if [ -w /dev/full ]; then
         if [ "$rc" -eq 3 ] && grep -q "cannot write standard output" "$T/err"; then pass "$cmd > /dev/full: exit 3"; else
             fail "$cmd > /dev/full: exit $rc"; cat "$T/err"; fi
     done
+    # the strides onto a full disk: with the reason, as the trajectory's
+    expect_exit 3 "--strides to a full disk" "$H" replay vectors/walk.bin --strides /dev/full --quiet
+    expect_err "^harness replay: error: cannot write the strides to /dev/full (No space left on device)$" "--strides: the full disk's reason given"
 fi
 # a closed pipe on standard output is a write error too (exit 3), not a
 # silent SIGPIPE that loses the JSON (`--out - | head -1`)
