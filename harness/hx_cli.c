@@ -3,6 +3,7 @@
 
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -1043,17 +1044,71 @@ void hx_json_num(cJSON *o, const char *k, double v)
     }
 }
 
+/* 0 when `path` can be opened for writing, else the errno the open would
+ * give. Nothing is created or removed: a file made and removed again left
+ * the target of a dangling symlink made and the link itself removed. */
+static int writable_errno(const char *path)
+{
+    char cur[HX_PLOT_PATH_SIZE], link[HX_PLOT_PATH_SIZE];
+    const char *slash;
+    struct stat st;
+    ssize_t n;
+    size_t len;
+    int fd, hops;
+    if (*path == '\0') {
+        return ENOENT;
+    }
+    if (strlen(path) >= sizeof cur) {
+        return ENAMETOOLONG;
+    }
+    strcpy(cur, path);
+    for (hops = 0;; hops++) {
+        if (stat(cur, &st) == 0) {
+            /* there: opened as the write opens it, without creating */
+            if ((fd = open(cur, O_WRONLY | O_APPEND)) < 0) {
+                return errno;
+            }
+            close(fd);
+            return 0;
+        }
+        if (errno != ENOENT) {
+            return errno;
+        }
+        /* a dangling symlink: the write creates its target */
+        if ((n = readlink(cur, link, sizeof link - 1)) < 0) {
+            break;
+        }
+        if (hops == 40) {
+            return ELOOP;
+        }
+        link[n] = '\0';
+        slash = strrchr(cur, '/');
+        len = link[0] != '/' && slash != NULL ? (size_t)(slash - cur) + 1u : 0u;
+        if (len + (size_t)n >= sizeof cur) {
+            return ENAMETOOLONG;
+        }
+        memcpy(cur + len, link, (size_t)n + 1u);
+    }
+    /* not there: created in its directory */
+    len = strlen(cur);
+    if (cur[len - 1u] == '/') {
+        return EISDIR;
+    }
+    slash = strrchr(cur, '/');
+    if (slash == NULL) {
+        strcpy(cur, ".");
+    } else {
+        cur[slash == cur ? 1 : slash - cur] = '\0';
+    }
+    return access(cur, W_OK | X_OK) == 0 ? 0 : errno;
+}
+
 int hx_check_writable(const char *cmd, const char *path)
 {
-    const int existed = access(path, F_OK) == 0;
-    FILE *f = fopen(path, "a");
-    if (f == NULL) {
-        hx_error(cmd, "cannot write %s (%s)", path, strerror(errno));
+    const int e = writable_errno(path);
+    if (e != 0) {
+        hx_error(cmd, "cannot write %s (%s)", path, strerror(e));
         return -1;
-    }
-    fclose(f);
-    if (!existed) {
-        remove(path);
     }
     return 0;
 }

@@ -586,6 +586,19 @@ expect_exit 3 "montecarlo --plot in a directory that does not exist" "$H" montec
 expect_err "^harness montecarlo: error: cannot write $T/nodir/m.png (No such file or directory)" "montecarlo --plot: the picture named"
 [ ! -e "$T/gm3.json" ] && pass "montecarlo --plot unwritable: nothing written" || fail "montecarlo --plot unwritable: --json written"
 
+# --- an output checked before the run leaves no trace: a dangling symlink given as --json stays a link, the
+# JSON written into the file it names (the check created that file empty and removed the path: the link, which
+# the JSON then replaced by a plain file); a run refused by another output leaves neither
+ln -s dang_t.json "$T/dang.json"
+expect_exit 0 "replay --json onto a dangling symlink" "$H" replay vectors/walk.bin --quiet --json "$T/dang.json"
+[ -L "$T/dang.json" ] && json "$T/dang_t.json" '"footnav_version" in j' && pass "dangling --json: the link kept, its file written" ||
+    fail "dangling --json: $(ls -l "$T" | grep dang)"
+ln -s dang2_t.json "$T/dang2.json"
+expect_exit 3 "replay --json onto a dangling symlink, --out unwritable" "$H" replay vectors/walk.bin --quiet \
+    --json "$T/dang2.json" --out "$T/nodir/x.csv"
+[ -L "$T/dang2.json" ] && [ ! -e "$T/dang2_t.json" ] && pass "a refused run: the dangling link kept, no file made" ||
+    fail "a refused run: $(ls -l "$T" | grep dang2)"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
