@@ -1,9 +1,11 @@
 /* Shared command-line plumbing of ./harness (see hx_cli.h). */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "hx_cli.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -1172,9 +1174,23 @@ int hx_plot_have_gnuplot(const char *cmd, const char *png_path)
     return 0;
 }
 
+/* 1 when `path` is there and is not a regular file: gnuplot writes into
+ * whatever is there, and a device takes the picture (/dev/full: lost,
+ * exit 0) */
+static int not_a_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && !S_ISREG(st.st_mode);
+}
+#define NOT_A_FILE_MSG "cannot write %s: not a regular file (a picture is written to a file)"
+
 int hx_plot_check(const char *cmd, const char *png_path)
 {
     if (hx_plot_have_gnuplot(cmd, png_path) != 0) {
+        return -1;
+    }
+    if (not_a_file(png_path)) {
+        hx_error(cmd, NOT_A_FILE_MSG, png_path);
         return -1;
     }
     return hx_check_writable(cmd, png_path);
@@ -1235,7 +1251,12 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
         return -1;
     }
     /* gnuplot writes the image to its standard output when it cannot open
-     * the file: find out first, and keep its output away from ours */
+     * the file: find out first, and keep its output away from ours (a
+     * device there: eval's warning, as a picture gnuplot fails to draw) */
+    if (not_a_file(png_path)) {
+        plot_failed(cmd, NOT_A_FILE_MSG, png_path);
+        return -1;
+    }
     if (hx_plot_check(cmd, png_path) != 0) {
         return -1;
     }
@@ -1275,6 +1296,27 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     return 0;
 }
 
+/* 1 when `path` is a regular file holding a whole PNG: its signature, and
+ * the IEND chunk last. pngcairo exits 0 when its write fails (a full
+ * disk): the picture is cut short and gnuplot's status says nothing. */
+static int png_complete(const char *path)
+{
+    static const unsigned char k_sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+    static const unsigned char k_iend[12] = { 0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
+    unsigned char head[8], tail[12];
+    struct stat st;
+    FILE *f;
+    int ok;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < 20 || (f = fopen(path, "rb")) == NULL) {
+        return 0;
+    }
+    ok = fread(head, 1, sizeof head, f) == sizeof head && memcmp(head, k_sig, sizeof head) == 0 &&
+         fseek(f, -12L, SEEK_END) == 0 && fread(tail, 1, sizeof tail, f) == sizeof tail &&
+         memcmp(tail, k_iend, sizeof tail) == 0;
+    fclose(f);
+    return ok;
+}
+
 int hx_plot_close(hx_plot_t *p, const char *cmd)
 {
     int rc;
@@ -1284,26 +1326,34 @@ int hx_plot_close(hx_plot_t *p, const char *cmd)
     fprintf(p->gp, "unset output\n");
     rc = pclose(p->gp);
     p->gp = NULL;
-    if (rc != 0 || access(p->path, F_OK) != 0) {
+    if (rc != 0 || !png_complete(p->path)) {
         /* gnuplot failed partway: a half-drawn picture is no result, not
          * to be left behind. Removed when this session
          * started it: new, or changed since hx_plot_open (gnuplot's set
          * output truncates the file in place); a file gnuplot never opened
-         * (it failed before its set output) stays as it was. */
+         * (it failed before its set output) stays as it was. Only a
+         * regular file is removed: through a symlink, the file it names. */
         long long now[7];
         int i, changed = 0;
-        if (file_sig(p->path, now) == 0) {
+        char real[PATH_MAX];
+        const char *file = p->path;
+        const char *why = rc == 0 && access(p->path, F_OK) == 0 ? " (the PNG is cut short: a full disk?)" : "";
+        struct stat st;
+        if (lstat(p->path, &st) == 0 && S_ISLNK(st.st_mode) && realpath(p->path, real) != NULL) {
+            file = real;
+        }
+        if (stat(file, &st) == 0 && S_ISREG(st.st_mode) && file_sig(file, now) == 0) {
             for (i = 0; i < 7; i++) {
                 changed |= !p->existed || now[i] != p->before[i];
             }
         }
-        if (changed && remove(p->path) == 0) {
-            plot_failed(cmd, "gnuplot failed to write %s; the partial file was removed", p->path);
+        if (changed && remove(file) == 0) {
+            plot_failed(cmd, "gnuplot failed to write %s%s; the partial file was removed", p->path, why);
         } else if (changed) {
-            plot_failed(cmd, "gnuplot failed to write %s; the partial file could not be removed (%s)", p->path,
+            plot_failed(cmd, "gnuplot failed to write %s%s; the partial file could not be removed (%s)", p->path, why,
                         strerror(errno));
         } else {
-            plot_failed(cmd, "gnuplot failed to write %s", p->path);
+            plot_failed(cmd, "gnuplot failed to write %s%s", p->path, why);
         }
         return -1;
     }

@@ -205,16 +205,19 @@ typedef struct {
  *  message printed when gnuplot is not installed or the PNG cannot be
  *  written (a path of HX_PLOT_PATH_SIZE bytes or more included). */
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h);
-/** 0 when gnuplot is installed and `png_path` can be written; -1 with the
- *  error printed. For plots drawn only after long work. */
+/** 0 when gnuplot is installed and `png_path` can be written (a file, or
+ *  none yet: a device or a directory is refused); -1 with the error
+ *  printed. For plots drawn only after long work. */
 int hx_plot_check(const char *cmd, const char *png_path);
 /** 0 when gnuplot is installed; -1 with the error printed (naming
  *  png_path). For a command that makes the picture's directory: asked
  *  first, so that a refused run leaves none behind. */
 int hx_plot_have_gnuplot(const char *cmd, const char *png_path);
-/** Finish; returns 0 when the PNG was written. When gnuplot failed, the
- *  file it started in this session (one that was not there, or one that was
- *  and has changed since hx_plot_open) is removed, and the error says so. */
+/** Finish; returns 0 when the PNG was written: gnuplot's exit status 0
+ *  and a whole PNG, its IEND chunk last (pngcairo exits 0 on a full disk).
+ *  When gnuplot failed, the file it started in this session (one that was
+ *  not there, or one that was and has changed since hx_plot_open) is
+ *  removed, and the error says so. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
 /** on: a picture gnuplot fails to draw (hx_plot_close, or gnuplot not
  *  starting in hx_plot_open) is printed as a warning, for a command that

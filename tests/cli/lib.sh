@@ -34,13 +34,26 @@ struct.pack_into("<d", b, 16, float(sys.argv[3]))
 struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
 open(sys.argv[2], "wb").write(b)' "$@"
 }
-fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and creates the output file
+fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and writes the output file
+    # (a PNG's signature and its IEND chunk: the smallest picture the harness takes for a whole one)
     mkdir -p "$1"
     cat >"$1/gnuplot" <<'GP'
 #!/bin/sh
 cat >"$GP_SCRIPT"
 out=$(sed -n "s/^set output '\(.*\)'$/\1/p" "$GP_SCRIPT" | head -n 1)
-[ -n "$out" ] && : >"$out"
+[ -n "$out" ] && printf '\211PNG\r\n\032\n\000\000\000\000IEND\256B`\202' >"$out"
+exit 0
+GP
+    chmod +x "$1/gnuplot"
+}
+fake_gnuplot_cut() { # DIR: a stand-in gnuplot that exits 0 with its picture cut short (a PNG signature, no IEND
+    # chunk), as pngcairo does on a full disk
+    mkdir -p "$1"
+    cat >"$1/gnuplot" <<'GP'
+#!/bin/sh
+s=$(cat)
+out=$(printf '%s\n' "$s" | sed -n "s/^set output '\(.*\)'$/\1/p" | head -n 1)
+[ -n "$out" ] && printf '\211PNG\r\n\032\n\000\000\000\rIHDR' >"$out"
 exit 0
 GP
     chmod +x "$1/gnuplot"

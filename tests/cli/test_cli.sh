@@ -585,6 +585,63 @@ expect_exit 3 "montecarlo --plot in a directory that does not exist" "$H" montec
     --plot "$T/nodir/m.png" --json "$T/gm3.json"
 expect_err "^harness montecarlo: error: cannot write $T/nodir/m.png (No such file or directory)" "montecarlo --plot: the picture named"
 [ ! -e "$T/gm3.json" ] && pass "montecarlo --plot unwritable: nothing written" || fail "montecarlo --plot unwritable: --json written"
+# a picture cut short (pngcairo exits 0 when its write fails on a full disk): no whole PNG, its IEND chunk last,
+# is a failed picture (exit 3, the partial file removed; eval: a warning, no link), not a success with a
+# truncated PNG
+fake_gnuplot_cut "$T/cutgp"
+gp_cut() { # description picture
+    expect_err "error: gnuplot failed to write $2 (the PNG is cut short: a full disk?); the partial file was removed" \
+        "$1: the picture cut short named"
+    [ ! -e "$2" ] && pass "$1: no cut picture left" || fail "$1: $2 left behind"
+}
+expect_exit 3 "replay, a picture cut short" env PATH="$T/cutgp:$PATH" "$H" replay vectors/walk.bin --quiet --plot "$T/cr.png"
+gp_cut "replay" "$T/cr.png"
+expect_exit 3 "allan, a picture cut short" env PATH="$T/cutgp:$PATH" "$H" allan "$T/gst.csv" --no-sim --quiet --plot "$T/ca.png"
+gp_cut "allan" "$T/ca.png"
+expect_exit 3 "psd, a picture cut short" env PATH="$T/cutgp:$PATH" "$H" psd "$T/gst.csv" --plot "$T/cp_psd"
+gp_cut "psd" "$T/cp_psd/psd.png"
+expect_exit 3 "montecarlo, a picture cut short" env PATH="$T/cutgp:$PATH" "$H" montecarlo --seeds 3 --duration 20 --plot "$T/cm.png"
+gp_cut "montecarlo" "$T/cm.png"
+# through a symlink: the file it names is the partial one, removed; the link is not
+printf 'old' >"$T/cl_t.png" && ln -s cl_t.png "$T/cl.png"
+expect_exit 3 "replay, a picture cut short through a symlink" env PATH="$T/cutgp:$PATH" "$H" replay vectors/walk.bin --quiet \
+    --plot "$T/cl.png"
+[ -L "$T/cl.png" ] && [ ! -e "$T/cl_t.png" ] && pass "a picture cut short through a symlink: its file removed, the link kept" ||
+    fail "a picture cut short through a symlink: $(ls -l "$T" | grep cl_t)"
+expect_exit 0 "eval, a picture cut short" env PATH="$T/cutgp:$PATH" "$H" eval --no-experiments --data "$T/gev" --out "$T/gev/c.md"
+expect_err "harness eval: warning: gnuplot failed to write $T/gev/img/eval-xio.png (the PNG is cut short: a full disk?); the partial file was removed" \
+    "eval: the picture cut short named, as a warning"
+[ ! -e "$T/gev/img/eval-xio.png" ] && ! grep -q "eval-xio.png" "$T/gev/c.md" && pass "eval: no cut picture, no link to it" ||
+    fail "eval, a picture cut short: linked or left"
+# a --plot path that is there and is not a regular file (a device: the picture was lost there, exit 0) is
+# refused before the work, exit 3, and left as it is; a /dev/full of the test's own (root makes the node)
+fake_gnuplot "$T/wholegp"
+if [ "$(id -u)" = 0 ] && mknod -m 666 "$T/dfull" c 1 7 2>/dev/null; then
+    mkdir -p "$T/dpsd" && mknod -m 666 "$T/dpsd/psd.png" c 1 7
+    for c in replay allan psd montecarlo; do
+        case $c in
+        replay) set -- replay vectors/walk.bin --quiet --plot "$T/dfull" --json "$T/dj.json"; d=$T/dfull ;;
+        allan) set -- allan "$T/gst.csv" --no-sim --quiet --plot "$T/dfull" --json "$T/dj.json"; d=$T/dfull ;;
+        psd) set -- psd "$T/gst.csv" --plot "$T/dpsd" --json "$T/dj.json"; d=$T/dpsd/psd.png ;;
+        montecarlo) set -- montecarlo --seeds 3 --duration 20 --plot "$T/dfull" --json "$T/dj.json"; d=$T/dfull ;;
+        esac
+        rm -f "$T/dj.json"
+        expect_exit 3 "$c --plot onto a device" env PATH="$T/wholegp:$PATH" GP_SCRIPT="$T/dgp.txt" "$H" "$@"
+        expect_err "^harness $c: error: cannot write $d: not a regular file" "$c --plot onto a device: said"
+        [ -c "$d" ] && [ ! -e "$T/dj.json" ] && pass "$c --plot onto a device: refused before the work, the node left" ||
+            fail "$c --plot onto a device: the node replaced, or --json written"
+    done
+    # eval: a warning, and the figure left out of results.md
+    rm -f "$T/gev/img/eval-xio.png" && mknod -m 666 "$T/gev/img/eval-xio.png" c 1 7
+    expect_exit 0 "eval, a figure onto a device" env PATH="$T/wholegp:$PATH" GP_SCRIPT="$T/dgp.txt" "$H" eval \
+        --no-experiments --data "$T/gev" --out "$T/gev/d.md"
+    expect_err "harness eval: warning: cannot write $T/gev/img/eval-xio.png: not a regular file" "eval, a figure onto a device: a warning"
+    [ -c "$T/gev/img/eval-xio.png" ] && ! grep -q "eval-xio.png" "$T/gev/d.md" && pass "eval, a figure onto a device: not linked, the node left" ||
+        fail "eval, a figure onto a device: linked, or the node replaced"
+    rm -f "$T/dfull" "$T/dpsd/psd.png" "$T/gev/img/eval-xio.png"
+else
+    echo "SKIP --plot onto a device: not root"
+fi
 
 # --- an output checked before the run leaves no trace: a dangling symlink given as --json stays a link, the
 # JSON written into the file it names (the check created that file empty and removed the path: the link, which

@@ -722,7 +722,10 @@ if /usr/bin/python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1
 # writes its file.
 # (the gnuplot adds a line to a file beside it when it starts: the last
 # picture's, whose 1 s the second signal lands in)
-live_with_gnuplot gp1 '#!/bin/sh\necho run >>"${0%/*}/started"\nf=$(sed -n "s/^set output .\\(.*\\).$/\\1/p" | head -n 1)\nsleep 1\n: >"$f"\n' \
+# (a whole PNG, its signature and IEND chunk: an empty file is no picture)
+mkdir -p "$T/gp1"
+printf '\211PNG\r\n\032\n\000\000\000\000IEND\256B`\202' >"$T/gp1/whole.png"
+live_with_gnuplot gp1 '#!/bin/sh\necho run >>"${0%/*}/started"\nf=$(sed -n "s/^set output .\\(.*\\).$/\\1/p" | head -n 1)\nsleep 1\ncat "${0%/*}/whole.png" >"$f"\n' \
     --timeout 30 --plot "$T/two.png" --plot-every 100 --record "$T/rec_two.bin"
 send_still 0
 wait_for '[ -f "$T/rec_two.bin" ] && [ "$(records "$T/rec_two.bin")" -ge 99 ]' 100
