@@ -966,7 +966,8 @@ static int moved(const hx_traj_t *t)
 }
 
 /* Draw the plot in a child process so that the receive loop never waits for
- * gnuplot; the PNG is written to a temporary name and renamed. */
+ * gnuplot; the PNG is written to a temporary name and renamed (onto a
+ * regular file or none: hx_plot_rename_target). */
 static void plot_async(live_t *L, const char *png)
 {
     pid_t pid;
@@ -989,7 +990,7 @@ static void plot_async(live_t *L, const char *png)
     }
     if (pid == 0) {
         hx_plot_t p;
-        char tmp[600];
+        char tmp[HX_PLOT_PATH_SIZE]; /* room for any png (hx_plot_rename_target): not cut to another name */
         size_t i;
         const hist_t *h = &L->hist;
         snprintf(tmp, sizeof tmp, "%s.tmp.png", png);
@@ -1063,6 +1064,7 @@ int hx_cmd_live(int argc, char **argv)
     /* quiet time before held frames are flushed: shorter than --timeout */
     double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
+    char plot_file[HX_PLOT_PATH_SIZE - 8]; /* room for ".tmp.png" after it */
     char err[HX_ERR_SIZE], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
     int stop_sig;
@@ -1120,6 +1122,12 @@ int hx_cmd_live(int argc, char **argv)
         }
     }
     if (plot_every > 0.0) {
+        /* each picture is renamed onto the path: a device there was
+         * replaced by a PNG, a symlink by a file (its target never updated) */
+        if (hx_plot_rename_target(CMD, plot_png, plot_file, sizeof plot_file) != 0) {
+            return HX_EXIT_USAGE;
+        }
+        plot_png = plot_file;
         /* the plots are drawn in a child, whose failure nobody would see:
          * find out now that gnuplot is there and the picture can be written */
         if (hx_plot_check(CMD, plot_png) != 0) {

@@ -1196,6 +1196,31 @@ int hx_plot_check(const char *cmd, const char *png_path)
     return hx_check_writable(cmd, png_path);
 }
 
+int hx_plot_rename_target(const char *cmd, const char *path, char *buf, size_t size)
+{
+    char real[PATH_MAX];
+    struct stat st;
+    const char *to = path;
+    if (lstat(path, &st) == 0) {
+        /* a rename replaces what is there: the file a symlink names is the
+         * one to replace, and anything but a file is refused */
+        if (S_ISLNK(st.st_mode) && realpath(path, real) != NULL && stat(real, &st) == 0) {
+            to = real;
+        }
+        if (!S_ISREG(st.st_mode)) {
+            hx_error(cmd, "cannot write %s: not a regular file%s (the picture is drawn beside it and renamed onto it)",
+                     path, S_ISLNK(st.st_mode) ? " (a symbolic link to no file)" : "");
+            return -1;
+        }
+    }
+    if (strlen(to) >= size) {
+        hx_error(cmd, "cannot write %.80s...: the path is longer than %d bytes", to, (int)size - 1);
+        return -1;
+    }
+    strcpy(buf, to);
+    return 0;
+}
+
 /* What tells a file apart from the same path rewritten: device, inode,
  * size, modification and status change times; 0 when it exists. */
 static int file_sig(const char *path, long long sig[7])

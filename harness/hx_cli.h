@@ -209,6 +209,12 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
  *  none yet: a device or a directory is refused); -1 with the error
  *  printed. For plots drawn only after long work. */
 int hx_plot_check(const char *cmd, const char *png_path);
+/** The file a picture drawn beside it and renamed onto it replaces, in
+ *  `buf` (`size` bytes): `path`, or the regular file a symlink `path`
+ *  names (realpath: the link stays, its target is updated). 0, or -1 with
+ *  the error printed when `path` is there and is not a regular file (a
+ *  device, a directory, a symlink to none): a rename would replace it. */
+int hx_plot_rename_target(const char *cmd, const char *path, char *buf, size_t size);
 /** 0 when gnuplot is installed; -1 with the error printed (naming
  *  png_path). For a command that makes the picture's directory: asked
  *  first, so that a refused run leaves none behind. */

@@ -229,6 +229,42 @@ grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
 [ ! -e "$T/bad.png" ] && [ ! -e "$T/bad.png.tmp.png" ] && pass "no picture, no temporary left" ||
     fail "a picture or its temporary left: $(ls "$T" | grep bad.png)"
 
+# --- each picture is drawn beside --plot's path and renamed onto it: a path that is there and is not a regular
+# file is refused before the run (a device was replaced by a PNG, exit 0; a dangling symlink by a file); a symlink
+# to a file stays a link, the file it names updated (it was replaced by a plain file, its target never drawn)
+mkdir "$T/pdir"
+ln -s "$T/nowhere.png" "$T/pdang.png"
+for p in pdir pdang.png; do
+    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/$p" >/dev/null 2>"$T/err"; expect_rc $? 2 "live --plot onto $p"
+    grep_in "$T/err" "cannot write $T/$p: not a regular file" "live --plot onto $p: the reason said"
+done
+[ -d "$T/pdir" ] && [ -L "$T/pdang.png" ] && [ ! -e "$T/nowhere.png" ] && pass "the refused paths are as they were" ||
+    fail "a refused --plot path changed: $(ls -l "$T" | grep -e pdir -e pdang -e nowhere)"
+if [ "$(id -u)" = 0 ]; then
+    # a /dev/full of the test's own (as root the rename replaced the device node)
+    mknod -m 666 "$T/pfull" c 1 7
+    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/pfull" >/dev/null 2>"$T/err"; expect_rc $? 2 "live --plot onto a device"
+    grep_in "$T/err" "cannot write $T/pfull: not a regular file" "live --plot onto a device: the reason said"
+    [ -c "$T/pfull" ] && pass "the device node is left as it was" || fail "the device node was replaced"
+    rm -f "$T/pfull"
+fi
+fake_gnuplot "$T/gpwhole"
+printf 'old' >"$T/ptarget.png"
+ln -s "$T/ptarget.png" "$T/plink.png"
+OLDPATH=$PATH
+PATH="$T/gpwhole:$PATH"
+GP_SCRIPT=$T/gpwhole/script
+export GP_SCRIPT
+start_live --timeout 30 --plot "$T/plink.png"
+PATH=$OLDPATH
+stream vectors/walk.bin --speed 40
+wait_live
+expect_rc "$LIVE_RC" 0 "live --plot onto a symlink to a file"
+[ -L "$T/plink.png" ] && [ "$(head -c 4 "$T/ptarget.png" | od -An -c | tr -d ' ')" = "211PNG" ] &&
+    [ ! -e "$T/ptarget.png.tmp.png" ] && [ ! -e "$T/plink.png.tmp.png" ] &&
+    pass "the link stays a link, the file it names holds the picture" ||
+    fail "symlink --plot: $(ls -l "$T" | grep -e plink -e ptarget)"
+
 # --- corrupt frames: skipped, counted, reported; the rest recorded
 start_live --record "$T/rec_c.bin" --timeout 30 --json "$T/live_c.json"
 stream vectors/walk.bin --speed 40 --inject-corrupt 1000
