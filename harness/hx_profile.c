@@ -15,16 +15,133 @@
 typedef struct {
     const char *key;
     size_t offset; /* of a fnav_real_t[3] in fnav_profile_t */
+    double lo, hi; /* its limits (hx_profile.h) */
+    const char *why;
 } key3_t;
 
 static const key3_t k_keys[6] = {
-    { "accel_noise_mps2_rthz", offsetof(fnav_profile_t, accel_noise_mps2_rthz) },
-    { "accel_tau_s", offsetof(fnav_profile_t, accel_tau_s) },
-    { "accel_bias_sigma_mps2", offsetof(fnav_profile_t, accel_bias_sigma_mps2) },
-    { "gyro_noise_rps_rthz", offsetof(fnav_profile_t, gyro_noise_rps_rthz) },
-    { "gyro_tau_s", offsetof(fnav_profile_t, gyro_tau_s) },
-    { "gyro_bias_sigma_rps", offsetof(fnav_profile_t, gyro_bias_sigma_rps) },
+    { "accel_noise_mps2_rthz", offsetof(fnav_profile_t, accel_noise_mps2_rthz), HX_PROFILE_NOISE_MIN,
+      HX_PROFILE_NOISE_MAX, "positive in float; sim's white density at most 1e3" },
+    { "accel_tau_s", offsetof(fnav_profile_t, accel_tau_s), HX_PROFILE_TAU_MIN_S, HX_PROFILE_TAU_MAX_S,
+      "sim's ar1 tau_s range" },
+    { "accel_bias_sigma_mps2", offsetof(fnav_profile_t, accel_bias_sigma_mps2), HX_PROFILE_SIGMA_MIN,
+      HX_PROFILE_SIGMA_MAX, "the filter's square positive in float; sim's ar1 sigma at most 1e3" },
+    { "gyro_noise_rps_rthz", offsetof(fnav_profile_t, gyro_noise_rps_rthz), HX_PROFILE_NOISE_MIN,
+      HX_PROFILE_NOISE_MAX, "positive in float; sim's white density at most 1e3" },
+    { "gyro_tau_s", offsetof(fnav_profile_t, gyro_tau_s), HX_PROFILE_TAU_MIN_S, HX_PROFILE_TAU_MAX_S,
+      "sim's ar1 tau_s range" },
+    { "gyro_bias_sigma_rps", offsetof(fnav_profile_t, gyro_bias_sigma_rps), HX_PROFILE_SIGMA_MIN,
+      HX_PROFILE_SIGMA_MAX, "the filter's square positive in float; sim's ar1 sigma at most 1e3" },
 };
+
+#define RATE_WHY "an IMU's output rate"
+
+/* The keys a misspelling is matched against: those read (format, name,
+ * rate_hz, then k_keys' order), then the optional ones `allan --profile`
+ * writes (cmd_allan.c, write_profile). */
+enum { KEY_FORMAT, KEY_NAME, KEY_RATE, KEY_VEC0, KEY_NREAD = KEY_VEC0 + 6 };
+static const char *const k_known[] = {
+    "format", "name", "rate_hz", "accel_noise_mps2_rthz", "accel_tau_s", "accel_bias_sigma_mps2",
+    "gyro_noise_rps_rthz", "gyro_tau_s", "gyro_bias_sigma_rps", "ident_method", "ident_samples",
+    "accel_quant_mps", "gyro_quant_rad", "accel_rrw_mps2_rts", "gyro_rrw_rps_rts", "ident_bound_accel",
+    "ident_bound_gyro", "allan_fit_rms_log10_accel", "allan_fit_rms_log10_gyro", "paper_accel_noise_mps2_rthz",
+    "paper_accel_tau_s", "paper_accel_bias_sigma_mps2", "paper_gyro_noise_rps_rthz", "paper_gyro_tau_s",
+    "paper_gyro_bias_sigma_rps",
+};
+#define NKNOWN (sizeof k_known / sizeof k_known[0])
+
+/* 1 for a key of the documented optional families, never warned about:
+ * what allan writes and may write later (profile-format.md), and x_*, the
+ * user's own */
+static int key_optional(const char *key)
+{
+    return strncmp(key, "x_", 2) == 0 || strncmp(key, "ident_", 6) == 0 || strncmp(key, "paper_", 6) == 0 ||
+           strncmp(key, "allan_fit_rms_log10_", 20) == 0 || strstr(key, "_quant_") != NULL ||
+           strstr(key, "_rrw_") != NULL;
+}
+
+/* How far the unknown key u is from the known key k: the Levenshtein
+ * distance to k, or 1 more than that to a part of k ending at an '_'
+ * (gyro_nosie is 2 from gyro_noise, so 3 from gyro_noise_rps_rthz, not
+ * the 11 of the whole key). Two rows over k, iterative. */
+#define KEY_DIST_FAR 1000u
+static unsigned key_distance(const char *u, const char *k)
+{
+    unsigned row[2][40];
+    const size_t lk = strlen(k), lu = strlen(u);
+    size_t i, j;
+    unsigned best;
+    if (lk + 1u > sizeof row[0] / sizeof row[0][0] || lu > 64u) {
+        return KEY_DIST_FAR;
+    }
+    for (j = 0; j <= lk; j++) {
+        row[0][j] = (unsigned)j;
+    }
+    for (i = 1; i <= lu; i++) {
+        unsigned *prev = row[(i - 1u) & 1u], *cur = row[i & 1u];
+        cur[0] = (unsigned)i;
+        for (j = 1; j <= lk; j++) {
+            unsigned d = prev[j - 1] + (u[i - 1] != k[j - 1]);
+            d = prev[j] + 1u < d ? prev[j] + 1u : d;
+            d = cur[j - 1] + 1u < d ? cur[j - 1] + 1u : d;
+            cur[j] = d;
+        }
+    }
+    best = row[lu & 1u][lk];
+    for (j = 1; j < lk; j++) {
+        if (k[j] == '_' && row[lu & 1u][j] + 1u < best) {
+            best = row[lu & 1u][j] + 1u;
+        }
+    }
+    return best;
+}
+
+/* The known key an unknown one most likely meant (index in k_known), or
+ * -1: within 3 edits, fewer for a short key (within 1 for 3 letters) */
+static int key_suggest(const char *u)
+{
+    const size_t lu = strlen(u);
+    const unsigned limit = lu >= 6u ? 3u : lu >= 4u ? 2u : 1u;
+    unsigned best = KEY_DIST_FAR;
+    int at = -1;
+    size_t i;
+    for (i = 0; i < NKNOWN; i++) {
+        const unsigned d = key_distance(u, k_known[i]);
+        if (d < best) {
+            best = d;
+            at = (int)i;
+        }
+    }
+    return best <= limit ? at : -1;
+}
+
+/* text as it may be quoted in a message: at most n-1 bytes, a control
+ * character as '?' (a key is the file's text, printed to a terminal) */
+static void quote_text(char *dst, size_t n, const char *text)
+{
+    size_t i;
+    for (i = 0; i + 1u < n && text[i] != '\0'; i++) {
+        const unsigned char c = (unsigned char)text[i];
+        dst[i] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+    }
+    dst[i] = '\0';
+}
+
+/* Index of the first control character of a name, or -1: ASCII's and
+ * C1's in UTF-8 (U+0080-U+009F, C2 80-9F: U+009B is a terminal's CSI);
+ * a name goes to stdout (sim's effect lines, replay's summary) */
+static long name_control(const char *s)
+{
+    long i;
+    for (i = 0; s[i] != '\0'; i++) {
+        const unsigned char c = (unsigned char)s[i];
+        if (c < 0x20u || c == 0x7fu || (c == 0xc2u && (unsigned char)s[i + 1] >= 0x80u &&
+                                        (unsigned char)s[i + 1] <= 0x9fu)) {
+            return i;
+        }
+    }
+    return -1;
+}
 
 static char *trim(char *s)
 {
@@ -37,6 +154,27 @@ static char *trim(char *s)
         *--e = '\0';
     }
     return s;
+}
+
+/* The number at s (after blanks) into *v, its text [*num, *end): 0, -1
+ * when the text up to the next blank is no number, -2 when it has an x or
+ * a p: strtod reads 0x10 as 16 and 0x1p-3 as 0.125, and a profile's
+ * numbers are decimal as the options' are (docs/harness.md) */
+static int read_decimal(const char *s, double *v, const char **num, const char **end)
+{
+    const char *t = s + strspn(s, " \t");
+    const size_t n = strcspn(t, " \t");
+    char *stop;
+    *num = t;
+    *end = t + n;
+    if (n == 0u) {
+        return -1;
+    }
+    if (strcspn(t, "xXpP") < n) {
+        return -2;
+    }
+    *v = strtod(t, &stop);
+    return stop == t + n ? 0 : -1;
 }
 
 /* One line of f into line[size] without its newline. Returns its length,
@@ -68,13 +206,53 @@ static long read_line(FILE *f, char *line, size_t size)
     return (long)n;
 }
 
+/* An unknown key kept for the error about a missing one it may spell */
+#define UNKNOWN_KEPT 16
+typedef struct {
+    int line, meant; /* meant: index in k_known, or -1 */
+    char text[48];
+} unknown_t;
+
+/* "; line N has 'TEXT', unknown: misspelt?" when an unknown key kept in
+ * u[n] most likely meant k_known[key], else "" */
+static const char *misspelt(char *buf, size_t size, const unknown_t *u, int n, int key)
+{
+    int i;
+    buf[0] = '\0';
+    for (i = 0; i < n; i++) {
+        if (u[i].meant == key) {
+            snprintf(buf, size, "; line %d has '%s', unknown: misspelt?", u[i].line, u[i].text);
+            break;
+        }
+    }
+    return buf;
+}
+
 int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_size)
+{
+    return hx_profile_read_warn(path, p, NULL, 0, err, err_size);
+}
+
+/* The unknown-key warnings kept in a warn buffer; the rest are counted */
+#define WARN_LINES_MAX 8
+
+int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t warn_size, char *err,
+                         size_t err_size)
 {
     FILE *f = fopen(path, "r");
     char line[513]; /* 511 characters (profile-format.md), a CR and the terminator */
+    char hint[128];
     long len;
     int lineno = 0, have_magic = 0, have_rate = 0, have_name = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
-    int i;
+    int i, nunknown = 0, nwarned = 0;
+    size_t wlen = 0;
+    unknown_t unknown[UNKNOWN_KEPT];
+    if (warn_size == 0u) {
+        warn = NULL;
+    }
+    if (warn != NULL) {
+        warn[0] = '\0';
+    }
     if (f == NULL) {
         snprintf(err, err_size, "%s: cannot open profile (%s)", path, strerror(errno));
         return -1;
@@ -135,41 +313,73 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             }
             have_magic = 1;
         } else if (strcmp(key, "name") == 0) {
+            const long bad = name_control(val);
+            if (bad >= 0) {
+                /* an ESC in the name went to the terminal as is */
+                snprintf(err, err_size, "%s:%d: name has a control character (byte %ld, 0x%02x): a name is printable "
+                                        "text",
+                         path, lineno, bad + 1, (unsigned)(unsigned char)val[bad]);
+                fclose(f);
+                return -1;
+            }
             snprintf(p->name, sizeof p->name, "%s", val);
             have_name = 1;
         } else if (strcmp(key, "rate_hz") == 0) {
-            char *end;
-            double v = strtod(val, &end);
-            if (end == val || *trim(end) != '\0' || !(v > 0.0 && v <= 1e6)) {
-                snprintf(err, err_size, "%s:%d: rate_hz '%s' is not a rate in (0, 1e6]", path, lineno, val);
+            const char *num, *end;
+            double v = 0.0;
+            const int rc = read_decimal(val, &v, &num, &end);
+            if (rc == -2) {
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is not a decimal number (no hexadecimal)", path, lineno,
+                         val);
+                fclose(f);
+                return -1;
+            }
+            if (rc != 0 || *end != '\0' || !isfinite(v) || !(v > 0.0)) {
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is not a positive number", path, lineno, val);
                 fclose(f);
                 return -1;
             }
             p->rate_hz = (fnav_real_t)v;
-            if (!(p->rate_hz > FNAV_R(0.0))) {
+            if (!(p->rate_hz > FNAV_R(0.0)) || !isfinite(p->rate_hz)) {
                 /* 1e-50 is 0 in float: said at its line, with its key (not
                  * "a value is zero ... in the float build", no line, no
                  * key) */
-                snprintf(err, err_size, "%s:%d: rate_hz '%s' is 0 in the %s build (out of its range)", path, lineno,
-                         val, FNAV_USE_DOUBLE ? "double" : "float");
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is %s in the %s build (out of its range)", path, lineno,
+                         val, isfinite(p->rate_hz) ? "0" : "infinite", FNAV_USE_DOUBLE ? "double" : "float");
+                fclose(f);
+                return -1;
+            }
+            if (!(v >= HX_PROFILE_RATE_MIN_HZ && v <= HX_PROFILE_RATE_MAX_HZ)) {
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' outside [%g, %g] (%s)", path, lineno, val,
+                         HX_PROFILE_RATE_MIN_HZ, HX_PROFILE_RATE_MAX_HZ, RATE_WHY);
                 fclose(f);
                 return -1;
             }
             have_rate = 1;
         } else {
+            int found = 0;
             for (i = 0; i < 6; i++) {
                 if (strcmp(key, k_keys[i].key) == 0) {
                     fnav_real_t *dst = (fnav_real_t *)((char *)p + k_keys[i].offset);
-                    char *s = val, *end;
+                    const char *s = val, *num, *end = val;
                     int k;
+                    found = 1;
                     if (have[i]) {
                         snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
                         fclose(f);
                         return -1;
                     }
                     for (k = 0; k < 3; k++) {
-                        double v = strtod(s, &end);
-                        if (end == s || !isfinite(v) || !(v > 0.0)) {
+                        double v = 0.0;
+                        const int rc = read_decimal(s, &v, &num, &end);
+                        if (rc == -2) {
+                            snprintf(err, err_size, "%s:%d: %s value %d '%.*s' is not a decimal number (no "
+                                                    "hexadecimal)",
+                                     path, lineno, key, k + 1, (int)(end - num), num);
+                            fclose(f);
+                            return -1;
+                        }
+                        if (rc != 0 || !isfinite(v) || !(v > 0.0)) {
                             snprintf(err, err_size, "%s:%d: %s needs three positive numbers (x y z)", path, lineno,
                                      key);
                             fclose(f);
@@ -179,16 +389,23 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                         if (!isfinite(dst[k]) || !(dst[k] > FNAV_R(0.0))) {
                             /* positive in double, not in the working
                              * precision (1e39, 1e-50 in float): at its line */
-                            const char *num = s + strspn(s, " \t");
                             snprintf(err, err_size, "%s:%d: %s value %d '%.*s' is %s in the %s build (out of its range)",
                                      path, lineno, key, k + 1, (int)(end - num), num,
                                      isfinite(dst[k]) ? "0" : "infinite", FNAV_USE_DOUBLE ? "double" : "float");
                             fclose(f);
                             return -1;
                         }
+                        if (!(v >= k_keys[i].lo && v <= k_keys[i].hi)) {
+                            /* refused here for every command: the filter
+                             * took what the simulator refused later */
+                            snprintf(err, err_size, "%s:%d: %s value %d '%.*s' outside [%g, %g] (%s)", path, lineno,
+                                     key, k + 1, (int)(end - num), num, k_keys[i].lo, k_keys[i].hi, k_keys[i].why);
+                            fclose(f);
+                            return -1;
+                        }
                         s = end;
                     }
-                    if (*trim(s) != '\0') {
+                    if (*trim(val + (end - val)) != '\0') {
                         snprintf(err, err_size, "%s:%d: %s: unexpected text after three values", path, lineno, key);
                         fclose(f);
                         return -1;
@@ -197,33 +414,97 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                     break;
                 }
             }
-            /* unknown keys are ignored on purpose */
+            if (!found && !key_optional(key)) {
+                /* ignored (a later version's key reads in this one), not
+                 * without a word: gyro_nosie left the default unseen */
+                const int meant = key_suggest(key);
+                char q[48];
+                quote_text(q, sizeof q, key);
+                if (nunknown < UNKNOWN_KEPT) {
+                    unknown[nunknown].line = lineno;
+                    unknown[nunknown].meant = meant;
+                    snprintf(unknown[nunknown].text, sizeof unknown[nunknown].text, "%s", q);
+                    nunknown++;
+                }
+                if (warn != NULL && nwarned < WARN_LINES_MAX) {
+                    int m;
+                    if (meant >= 0) {
+                        m = snprintf(warn + wlen, warn_size - wlen, "%s:%d: unknown key '%s' ignored (did you mean %s?)\n",
+                                     path, lineno, q, k_known[meant]);
+                    } else {
+                        m = snprintf(warn + wlen, warn_size - wlen,
+                                     "%s:%d: unknown key '%s' ignored (a key of your own starts with x_)\n", path, lineno,
+                                     q);
+                    }
+                    if (m > 0 && (size_t)m < warn_size - wlen) {
+                        wlen += (size_t)m;
+                    } else {
+                        warn[wlen] = '\0'; /* a line that does not fit is left out whole */
+                    }
+                }
+                nwarned++;
+            }
         }
     }
     fclose(f);
+    if (warn != NULL && nwarned > WARN_LINES_MAX) {
+        int m = snprintf(warn + wlen, warn_size - wlen, "%s: %d more unknown keys ignored\n", path,
+                         nwarned - WARN_LINES_MAX);
+        if (!(m > 0 && (size_t)m < warn_size - wlen)) {
+            warn[wlen] = '\0';
+        }
+    }
+    /* no line to name: the file's name alone, and the line of an unknown
+     * key that may spell the missing one */
     if (!have_magic) {
-        snprintf(err, err_size, "%s: not a footnav profile (no 'format = %s' line)", path, PROFILE_MAGIC);
+        snprintf(err, err_size, "%s: not a footnav profile (no 'format = %s' line%s)", path, PROFILE_MAGIC,
+                 misspelt(hint, sizeof hint, unknown, nunknown, KEY_FORMAT));
         return -1;
     }
     if (!have_rate) {
-        snprintf(err, err_size, "%s: rate_hz missing", path);
+        snprintf(err, err_size, "%s: no line gives rate_hz (a required key%s)", path,
+                 misspelt(hint, sizeof hint, unknown, nunknown, KEY_RATE));
         return -1;
     }
     for (i = 0; i < 6; i++) {
         if (!have[i]) {
-            snprintf(err, err_size, "%s: %s missing", path, k_keys[i].key);
+            snprintf(err, err_size, "%s: no line gives %s (a required key%s)", path, k_keys[i].key,
+                     misspelt(hint, sizeof hint, unknown, nunknown, KEY_VEC0 + i));
             return -1;
         }
     }
     if (p->name[0] == '\0') {
         snprintf(p->name, sizeof p->name, "file");
     }
-    if (fnav_profile_validate(p) != FNAV_OK) {
-        /* each value was positive in double; in the working precision one
-         * may not be (1e-60 is 0 in float): said here, not later as a
-         * rejected --param */
-        snprintf(err, err_size, "%s: a value is zero, negative or not finite in the %s build (out of its range)",
-                 path, FNAV_USE_DOUBLE ? "double" : "float");
+    /* every value is within the limits, each positive and finite in
+     * either precision: fnav_profile_validate holds (the check it had here,
+     * "a value is zero, negative or not finite", could not be reached) */
+    return 0;
+}
+
+int hx_profile_check(const fnav_profile_t *p, char *err, size_t err_size)
+{
+    const double rate = (double)p->rate_hz;
+    const long bad = name_control(p->name);
+    int i, k;
+    if (!(rate >= HX_PROFILE_RATE_MIN_HZ && rate <= HX_PROFILE_RATE_MAX_HZ)) {
+        snprintf(err, err_size, "rate_hz %g outside [%g, %g] (%s)", rate, HX_PROFILE_RATE_MIN_HZ,
+                 HX_PROFILE_RATE_MAX_HZ, RATE_WHY);
+        return -1;
+    }
+    for (i = 0; i < 6; i++) {
+        const fnav_real_t *v = (const fnav_real_t *)((const char *)p + k_keys[i].offset);
+        for (k = 0; k < 3; k++) {
+            if (!((double)v[k] >= k_keys[i].lo && (double)v[k] <= k_keys[i].hi)) {
+                snprintf(err, err_size, "%s value %d %g outside [%g, %g] (%s)", k_keys[i].key, k + 1, (double)v[k],
+                         k_keys[i].lo, k_keys[i].hi, k_keys[i].why);
+                return -1;
+            }
+        }
+    }
+    if (bad >= 0) {
+        snprintf(err, err_size, "name has a control character (byte %ld, 0x%02x): a name is printable text", bad + 1,
+                 (unsigned)(unsigned char)p->name[bad]);
         return -1;
     }
     return 0;
@@ -358,7 +639,8 @@ static int profile_warned(const char *path)
 
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size)
 {
-    char msg[320];
+    char msg[320], warn[1024];
+    int implausible;
     if (fnav_profile_by_name(p, name_or_path) == FNAV_OK) {
         return 0;
     }
@@ -378,18 +660,28 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
                  is_file || is_dir ? name_or_path : "", is_dir ? "' is a directory, not a profile file" : "");
         return -1;
     }
-    if (hx_profile_read(name_or_path, p, err, err_size) != 0) {
+    if (hx_profile_read_warn(name_or_path, p, warn, sizeof warn, err, err_size) != 0) {
         return -1;
     }
     /* a file edited by hand in the wrong unit (a gyro noise in
      * deg/s/sqrt(Hz)) is valid but not plausible: replay on the bundled
      * walk ends 0.33 m from its start instead of 0.04 m with it. Valid, so
      * a warning; the run goes on. */
-    if (hx_profile_implausible(p, msg, sizeof msg) && !profile_warned(name_or_path)) {
+    implausible = hx_profile_implausible(p, msg, sizeof msg);
+    if ((implausible || warn[0] != '\0') && !profile_warned(name_or_path)) {
         /* once per file in a run: a command that loads its profiles once
          * per seed (montecarlo, the sensor's and the filter's) says each
          * once */
-        hx_warn(hx_cmd_name, "%s: %s", name_or_path, msg);
+        const char *w = warn;
+        while (*w != '\0') {
+            const char *nl = strchr(w, '\n');
+            const size_t n = nl != NULL ? (size_t)(nl - w) : strlen(w);
+            hx_warn(hx_cmd_name, "%.*s", (int)n, w);
+            w += n + (nl != NULL ? 1u : 0u);
+        }
+        if (implausible) {
+            hx_warn(hx_cmd_name, "%s: %s", name_or_path, msg);
+        }
     }
     return 0;
 }

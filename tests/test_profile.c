@@ -4,6 +4,7 @@
  * paper (c = e^(-1/tau), tau in samples) equals footnav's exp(-dt / tau_s) at
  * the identification rate; lookup by name; validation; the profile file
  * (written by `harness allan`) round trip and `--profile FILE` loading. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -15,6 +16,7 @@
 
 #include <cmocka.h>
 
+#include "footnav/fnav_imuerr.h"
 #include "footnav/fnav_nav.h"
 #include "footnav/fnav_profile.h"
 #include "fnav_testdata.h"
@@ -398,7 +400,8 @@ static void test_file_round_trip(void **state)
 /* A value positive and finite as read (double) but not in the working
  * precision (float: 1e39 is infinite, 1e-50 zero) is refused at its line,
  * naming the key, not only "a value is zero, negative or not finite in the
- * float build", without line or key. The double build takes both values. */
+ * float build", without line or key. The double build refuses both too,
+ * as outside the key's limits (a file valid for one build is for both). */
 static void test_file_out_of_float_range(void **state)
 {
     static const char *const lines[4] = { "gyro_tau_s = 100 100 1e39\n", "accel_noise_mps2_rthz = 1e-4 1e-50 1e-4\n",
@@ -429,17 +432,284 @@ static void test_file_out_of_float_range(void **state)
         }
         fclose(f);
         err[0] = '\0';
-#if FNAV_USE_DOUBLE
-        assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
-        assert_int_equal(fnav_profile_validate(&b), FNAV_OK);
-#else
         assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
         assert_non_null(strstr(err, k < 2 ? ":3:" : ":2:"));
         assert_non_null(strstr(err, keys[k]));
-        assert_non_null(strstr(err, "float"));
-#endif
+        assert_non_null(strstr(err, FNAV_USE_DOUBLE ? "outside [" : "float"));
     }
     remove(path);
+}
+
+/* A profile file of the seven required keys, 1e-3 each and rate_hz 200,
+ * with `edit` (one "key = value" line, may be "") replacing its key's line
+ * or, a key of no line here, after them; `extra` lines after all. */
+static void write_file(const char *path, const char *edit, const char *extra)
+{
+    static const char *const all[7] = { "rate_hz", "accel_noise_mps2_rthz", "accel_tau_s", "accel_bias_sigma_mps2",
+                                        "gyro_noise_rps_rthz", "gyro_tau_s", "gyro_bias_sigma_rps" };
+    const size_t ek = strcspn(edit, " =");
+    FILE *f = fopen(path, "w");
+    int i, used = 0;
+    assert_non_null(f);
+    fputs("format = footnav-profile 1\n", f);
+    for (i = 0; i < 7; i++) {
+        if (ek > 0u && strlen(all[i]) == ek && strncmp(all[i], edit, ek) == 0) {
+            fprintf(f, "%s\n", edit);
+            used = 1;
+        } else {
+            fprintf(f, "%s = %s\n", all[i], i == 0 ? "200" : "1e-3 1e-3 1e-3");
+        }
+    }
+    if (!used && edit[0] != '\0') {
+        fprintf(f, "%s\n", edit);
+    }
+    fputs(extra, f);
+    fclose(f);
+}
+
+/* Each value is checked against the strictest of its consumers' limits
+ * at its line (hx_profile.h): the filter took gyro_bias_sigma_rps = 1e-25
+ * and then refused its configuration naming no key, sim refused
+ * accel_noise 1e20 and a correlation time of 0.0005 s or 1e10 s after the
+ * load, simgap blamed the log; rate_hz 1e-40 zeroed eq6's bias sd. The
+ * limits themselves are taken. */
+static void test_value_limits(void **state)
+{
+    static const struct {
+        const char *line, *want;
+    } bad[] = {
+        { "gyro_bias_sigma_rps = 1e-5 1e-25 1e-5", ":8: gyro_bias_sigma_rps value 2 '1e-25' outside [1.0842e-19, 1000]" },
+        { "accel_bias_sigma_mps2 = 1e-3 1e-3 1001", ":5: accel_bias_sigma_mps2 value 3 '1001' outside [" },
+        { "accel_noise_mps2_rthz = 1e20 1e-3 1e-3", ":3: accel_noise_mps2_rthz value 1 '1e20' outside [" },
+        { "gyro_noise_rps_rthz = 1e-3 1e-3 1e-39", ":6: gyro_noise_rps_rthz value 3 '1e-39' " },
+        { "accel_tau_s = 0.0005 1 1", ":4: accel_tau_s value 1 '0.0005' outside [0.001, 1e+09]" },
+        { "gyro_tau_s = 1 1e10 1", ":7: gyro_tau_s value 2 '1e10' outside [0.001, 1e+09]" },
+        { "rate_hz = 1e-40", ":2: rate_hz '1e-40' outside [1, 1e+06]" },
+        { "rate_hz = 0.5", ":2: rate_hz '0.5' outside [1, 1e+06]" },
+    };
+    static const char *const good[] = {
+        "gyro_bias_sigma_rps = 1.0842022e-19 1e3 1e-5", "accel_noise_mps2_rthz = 1.2e-38 1e3 1e-3",
+        "accel_tau_s = 0.001 1e9 1", "rate_hz = 1", "rate_hz = 1e6",
+    };
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320];
+    fnav_profile_t b;
+    size_t k;
+    int fd;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        write_file(path, bad[k].line, "");
+        err[0] = '\0';
+        if (hx_profile_read(path, &b, err, sizeof err) != -1 || strstr(err, bad[k].want) == NULL) {
+            fail_msg("'%s': '%s', expected '%s'", bad[k].line, err, bad[k].want);
+        }
+    }
+    for (k = 0; k < sizeof good / sizeof good[0]; k++) {
+        write_file(path, good[k], "");
+        if (hx_profile_read(path, &b, err, sizeof err) != 0) {
+            fail_msg("'%s' refused: %s", good[k], err);
+        }
+        assert_int_equal(fnav_profile_validate(&b), FNAV_OK);
+    }
+    remove(path);
+}
+
+/* The limits are the simulator's effect ranges where it is the strictest
+ * (src/fnav_imuerr.c's catalogue: a change there shows here), the built-in
+ * profiles are within them, and hx_profile_check says a value outside
+ * (sim --bias-sigma eq6's rescaled sd) with its key. */
+static void test_limits_named(void **state)
+{
+    const fnav_effect_info_t *w = fnav_imuerr_effect_info(FNAV_EFFECT_WHITE);
+    const fnav_effect_info_t *a = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);
+    fnav_profile_t p;
+    char err[320];
+    int t;
+    (void)state;
+    assert_non_null(w);
+    assert_non_null(a);
+    assert_true(w->params[0].hi == HX_PROFILE_NOISE_MAX && w->params[0].lo <= HX_PROFILE_NOISE_MIN);
+    assert_true(a->params[0].lo == HX_PROFILE_TAU_MIN_S && a->params[0].hi == HX_PROFILE_TAU_MAX_S);
+    assert_true(a->params[1].hi == HX_PROFILE_SIGMA_MAX && a->params[1].lo <= HX_PROFILE_SIGMA_MIN);
+    /* the filter's sd_ok: the smallest sd's square is a normal float */
+    assert_true((float)(HX_PROFILE_SIGMA_MIN * HX_PROFILE_SIGMA_MIN) >= FLT_MIN);
+    for (t = 0; t < FNAV_PROFILE_COUNT; t++) {
+        assert_int_equal(fnav_profile_builtin(&p, (fnav_profile_id_t)t), FNAV_OK);
+        assert_int_equal(hx_profile_check(&p, err, sizeof err), 0);
+    }
+    assert_int_equal(fnav_profile_by_name(&p, "generic-mems"), FNAV_OK);
+    assert_int_equal(hx_profile_check(&p, err, sizeof err), 0);
+    p.gyro_bias_sigma_rps[1] = FNAV_R(2e3);
+    assert_int_equal(hx_profile_check(&p, err, sizeof err), -1);
+    assert_non_null(strstr(err, "gyro_bias_sigma_rps value 2 2000 outside [1.0842e-19, 1000]"));
+    assert_int_equal(fnav_profile_by_name(&p, "generic-mems"), FNAV_OK);
+    p.rate_hz = FNAV_R(0.5);
+    assert_int_equal(hx_profile_check(&p, err, sizeof err), -1);
+    assert_non_null(strstr(err, "rate_hz 0.5 outside [1, 1e+06]"));
+}
+
+/* A profile's numbers are decimal, as the options' are: strtod read 0x10
+ * as 16 and 0x1p-3 as 0.125 */
+static void test_hex_refused(void **state)
+{
+    static const struct {
+        const char *line, *want;
+    } bad[] = {
+        { "gyro_tau_s = 0x10 1 1", ":7: gyro_tau_s value 1 '0x10' is not a decimal number" },
+        { "accel_tau_s = 1 0x1p-3 1", ":4: accel_tau_s value 2 '0x1p-3' is not a decimal number" },
+        { "gyro_tau_s = 1 1 1p3", ":7: gyro_tau_s value 3 '1p3' is not a decimal number" },
+        { "rate_hz = 0xC8", ":2: rate_hz '0xC8' is not a decimal number" },
+    };
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320];
+    fnav_profile_t b;
+    size_t k;
+    int fd;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        write_file(path, bad[k].line, "");
+        err[0] = '\0';
+        if (hx_profile_read(path, &b, err, sizeof err) != -1 || strstr(err, bad[k].want) == NULL) {
+            fail_msg("'%s': '%s', expected '%s'", bad[k].line, err, bad[k].want);
+        }
+    }
+    write_file(path, "gyro_tau_s = 16 1.25e+1 +3", "");
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
+    remove(path);
+}
+
+/* A name is printed (sim's effect lines, replay's summary): a control
+ * character in it (an ESC, a C1 CSI in UTF-8) is refused at its line, a
+ * printable UTF-8 name is taken */
+static void test_name_printable(void **state)
+{
+    static const char *const bad[] = { "name = a\033[2Jb", "name = a\tb", "name = a\302\233b", "name = a\177" };
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320];
+    fnav_profile_t b;
+    size_t k;
+    int fd;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        write_file(path, bad[k], "");
+        err[0] = '\0';
+        if (hx_profile_read(path, &b, err, sizeof err) != -1 || strstr(err, ":9: name has a control character") == NULL) {
+            fail_msg("case %zu: '%s'", k, err);
+        }
+    }
+    write_file(path, "name = caf\303\251 200 Hz", "");
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
+    assert_string_equal(b.name, "caf\303\251 200 Hz");
+    remove(path);
+}
+
+/* A missing key has no line: the message says so, not "FILE: rate_hz
+ * missing" under a FILE:LINE promise, and names the line of an unknown key
+ * that may spell it */
+static void test_missing_key_message(void **state)
+{
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320], want[400];
+    fnav_profile_t b;
+    FILE *f;
+    int fd;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("format = footnav-profile 1\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    snprintf(want, sizeof want, "%s: no line gives rate_hz (a required key)", path);
+    assert_string_equal(err, want);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("format = footnav-profile 1\nrate_hz = 100\naccel_noise_mps2_rthz = 1 1 1\naccel_tau_s = 1 1 1\n"
+          "accel_bias_sigma_mps2 = 1 1 1\n# a comment\ngyro_nosie_rps_rthz = 1 1 1\n",
+          f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    snprintf(want, sizeof want,
+             "%s: no line gives gyro_noise_rps_rthz (a required key; line 7 has 'gyro_nosie_rps_rthz', unknown: "
+             "misspelt?)",
+             path);
+    assert_string_equal(err, want);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("fromat = footnav-profile 1\nrate_hz = 100\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a footnav profile (no 'format = footnav-profile 1' line; line 1 has 'fromat'"));
+    remove(path);
+}
+
+/* hx_profile_load of `path` with stderr captured into out[size] */
+static int load_captured(const char *path, char *out, size_t size)
+{
+    fnav_profile_t p;
+    char err[320];
+    FILE *cap = tmpfile();
+    int fd = dup(2), rc;
+    size_t n;
+    assert_non_null(cap);
+    assert_true(fd >= 0);
+    fflush(stderr);
+    assert_true(dup2(fileno(cap), 2) >= 0);
+    rc = hx_profile_load(path, &p, err, sizeof err);
+    fflush(stderr);
+    assert_true(dup2(fd, 2) >= 0);
+    close(fd);
+    rewind(cap);
+    n = fread(out, 1, size - 1u, cap);
+    out[n] = '\0';
+    fclose(cap);
+    return rc;
+}
+
+/* A key neither read nor documented is ignored with a warning at its line
+ * (gyro_nosie left the default noise in place without a word), naming
+ * the key it most likely meant; the optional keys `allan --profile` writes
+ * and x_* keys are not warned about */
+static void test_unknown_key_warned(void **state)
+{
+    static const struct {
+        const char *extra, *want;
+    } cases[] = {
+        { "gyro_nosie = 1 1 1\n", ":9: unknown key 'gyro_nosie' ignored (did you mean gyro_noise_rps_rthz?)" },
+        { "Name = t\n", ":9: unknown key 'Name' ignored (did you mean name?)" },
+        { "rate = 100\n", ":9: unknown key 'rate' ignored (did you mean rate_hz?)" },
+        { "gyro_tua_s = 1 1 1\n", "(did you mean gyro_tau_s?)" },
+        { "colour = red\n", ":9: unknown key 'colour' ignored (a key of your own starts with x_)" },
+        { "x_colour = red\nident_method = allan-lsq-white-ar1\nident_samples = 10\ngyro_quant_rad = 1 1 1\n"
+          "accel_rrw_mps2_rts = 1 1 1\nident_bound_gyro = 1 0 0\nallan_fit_rms_log10_accel = nan nan nan\n"
+          "paper_gyro_tau_s = 1 1 1\nident_future = 1\n",
+          NULL },
+    };
+    char path[64], out[2048];
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        /* a file each: the loader warns once per file */
+        int fd;
+        snprintf(path, sizeof path, "/tmp/fnav_profile_u%zu_XXXXXX", k);
+        fd = mkstemp(path);
+        assert_true(fd >= 0);
+        close(fd);
+        write_file(path, "", cases[k].extra);
+        assert_int_equal(load_captured(path, out, sizeof out), 0);
+        if (cases[k].want != NULL ? strstr(out, cases[k].want) == NULL || strstr(out, path) == NULL
+                                  : out[0] != '\0') {
+            fail_msg("case %zu: '%s'", k, out);
+        }
+        unlink(path);
+    }
 }
 
 /* The units check's advice (hx_profile_implausible): a value flagged in
@@ -606,6 +876,14 @@ int main(void)
         cmocka_unit_test(test_file_out_of_float_range),
         cmocka_unit_test(test_units_advice),
         cmocka_unit_test(test_generic_mems),
+        cmocka_unit_test(test_value_limits),
+        cmocka_unit_test(test_limits_named),
+        cmocka_unit_test(test_hex_refused),
+        cmocka_unit_test(test_name_printable),
+        cmocka_unit_test(test_missing_key_message),
+        /* after test_load_warns_once_per_file: it counts the files
+         * warned about before it */
+        cmocka_unit_test(test_unknown_key_warned),
     };
     return cmocka_run_group_tests_name("profile", tests, NULL, NULL);
 }
