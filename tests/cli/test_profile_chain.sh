@@ -221,11 +221,11 @@ bad_profile "without its format line" "bad.profile: not a footnav profile (no 'f
 printf 'format = footnav-profile 2\nrate_hz = 100\n' >"$T/bad.profile"
 bad_profile "of another format version" "bad.profile:1: format 'footnav-profile 2' not supported (expected 'footnav-profile 1')"
 printf '%s\n' "$HDR" >"$T/bad.profile"
-bad_profile "without rate_hz" "bad.profile: rate_hz missing"
+bad_profile "without rate_hz" "bad.profile: no line gives rate_hz (a required key)$"
 printf '%s\nrate_hz = 100\nrate_hz = 200\n' "$HDR" >"$T/bad.profile"
 bad_profile "with rate_hz twice" "bad.profile:3: rate_hz given twice"
 printf '%s\nrate_hz = 1e7\n' "$HDR" >"$T/bad.profile"
-bad_profile "with rate_hz out of range" "bad.profile:2: rate_hz '1e7' is not a rate in (0, 1e6\]"
+bad_profile "with rate_hz out of range" "bad.profile:2: rate_hz '1e7' outside \[1, 1e+06\] (an IMU's output rate)"
 printf '%s\nrate_hz = 100\nrate 100\n' "$HDR" >"$T/bad.profile"
 bad_profile "with a line without '='" "bad.profile:3: expected 'key = value'"
 printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100\n' "$HDR" >"$T/bad.profile"
@@ -243,6 +243,52 @@ bad_profile "with a 602-character line" "bad.profile:3: line too long (at most 5
 rm -f "$T/bad.profile"; mkdir "$T/bad.profile"
 bad_profile "that is a directory" "bad.profile: cannot read profile ("
 rmdir "$T/bad.profile"
+# a value one consumer refuses is refused by the loader, at its line with its key, by every command (exit 2,
+# nothing read): the filter took gyro_bias_sigma_rps = 1e-25 and refused its configuration naming no key, sim
+# refused accel_noise 1e20 and a correlation time of 0.0005 s as "not valid for the error model", simgap read the
+# log and blamed it; rate_hz 1e-40 made sim --bias-sigma eq6's bias sd 0; gyro_tau_s = 0x10 was read as 16
+limit_case() { # sed-expression expected-message
+    sed "$1" "$T/ds.profile" >"$T/lim.profile"
+    msg=$2
+    for c in replay sim montecarlo simgap; do
+        case $c in
+        replay) set -- "$H" replay vectors/walk.bin --quiet ;;
+        sim) set -- "$H" sim --duration 5 --out "$T/lim.bin" ;;
+        montecarlo) set -- "$H" montecarlo --seeds 1 --duration 5 --quiet ;;
+        simgap) set -- "$H" simgap vectors/walk.bin --quiet ;;
+        esac
+        expect_exit 2 "$c: profile $msg" "$@" --profile "$T/lim.profile"
+        expect_err "lim.profile:$msg" "$c: profile $msg: the message"
+    done
+}
+limit_case 's/^gyro_bias_sigma_rps = .*/gyro_bias_sigma_rps = 1e-25 4.8e-5 4.8e-5/' \
+    "12: gyro_bias_sigma_rps value 1 '1e-25' outside \[1.0842e-19, 1000\]"
+limit_case 's/^accel_noise_mps2_rthz = .*/accel_noise_mps2_rthz = 6.86e-4 1e20 6.86e-4/' \
+    "7: accel_noise_mps2_rthz value 2 '1e20' outside \[1.17549e-38, 1000\]"
+limit_case 's/^accel_tau_s = .*/accel_tau_s = 100 100 0.0005/' "8: accel_tau_s value 3 '0.0005' outside \[0.001, 1e+09\]"
+limit_case 's/^gyro_tau_s = .*/gyro_tau_s = 1e10 100 100/' "11: gyro_tau_s value 1 '1e10' outside \[0.001, 1e+09\]"
+limit_case 's/^rate_hz = .*/rate_hz = 1e-40/' "6: rate_hz '1e-40' outside \[1, 1e+06\]"
+limit_case 's/^gyro_tau_s = .*/gyro_tau_s = 0x10 1 1/' "11: gyro_tau_s value 1 '0x10' is not a decimal number"
+# a name goes to stdout: an ESC in it is refused, not sent to the terminal
+sed 's/^name = .*/name = a\x1b[2Jb/' "$T/ds.profile" >"$T/bad.profile"
+bad_profile "with an ESC in its name" "bad.profile:5: name has a control character (byte 2, 0x1b)"
+# a misspelt required key: its line is named in the error about the missing key
+sed 's/^gyro_noise_rps_rthz/gyro_nosie/' "$T/ds.profile" >"$T/bad.profile"
+bad_profile "with a misspelt required key" \
+    "bad.profile: no line gives gyro_noise_rps_rthz (a required key; line 10 has 'gyro_nosie', unknown: misspelt?)"
+# an unknown key is ignored (a later version's key), with a warning naming its line and the key it likely meant;
+# allan's optional keys and x_* are not warned about
+{ cat "$T/ds.profile"; printf 'gyro_nosie = 1 1 1\nName = t\nx_mine = 1\nident_samples = 5\npaper_gyro_tau_s = 1 1 1\n'; } >"$T/unk.profile"
+expect_exit 0 "replay with unknown keys in the profile" "$H" replay vectors/walk.bin --quiet --profile "$T/unk.profile"
+expect_err "warning: $T/unk.profile:13: unknown key 'gyro_nosie' ignored (did you mean gyro_noise_rps_rthz?)" \
+    "an unknown key: warned at its line with the key it likely meant"
+expect_err "unk.profile:14: unknown key 'Name' ignored (did you mean name?)" "Name: did you mean name"
+[ "$(grep -c "unknown key" "$T/err")" -eq 2 ] && pass "x_, ident_ and paper_ keys: no warning" ||
+    fail "unknown-key warnings: $(cat "$T/err")"
+expect_exit 0 "montecarlo with unknown keys in the profile" "$H" montecarlo --seeds 2 --duration 5 --quiet \
+    --profile "$T/unk.profile"
+[ "$(grep -c "unknown key 'gyro_nosie'" "$T/err")" -eq 1 ] && pass "montecarlo: the unknown key warned about once" ||
+    fail "montecarlo unknown-key warnings: $(grep -c "unknown key" "$T/err")"
 # a line of exactly 511 characters is still read (the limit is inclusive)
 { cat "$T/ds.profile"; printf '# '; awk 'BEGIN { for (i = 0; i < 509; i++) printf "x"; print "" }'; } >"$T/edge.profile"
 expect_exit 0 "a profile with a 511-character comment line" "$H" replay vectors/walk.bin --quiet --profile "$T/edge.profile"
