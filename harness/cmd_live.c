@@ -1125,7 +1125,7 @@ int hx_cmd_live(int argc, char **argv)
         /* each picture is renamed onto the path: a device there was
          * replaced by a PNG, a symlink by a file (its target never updated) */
         if (hx_plot_rename_target(CMD, plot_png, plot_file, sizeof plot_file) != 0) {
-            return HX_EXIT_USAGE;
+            return HX_EXIT_IO; /* an output that cannot be written, as every command's plot */
         }
         plot_png = plot_file;
         /* the plots are drawn in a child, whose failure nobody would see:

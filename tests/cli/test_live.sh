@@ -235,7 +235,7 @@ grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
 mkdir "$T/pdir"
 ln -s "$T/nowhere.png" "$T/pdang.png"
 for p in pdir pdang.png; do
-    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/$p" >/dev/null 2>"$T/err"; expect_rc $? 2 "live --plot onto $p"
+    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/$p" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --plot onto $p"
     grep_in "$T/err" "cannot write $T/$p: not a regular file" "live --plot onto $p: the reason said"
 done
 [ -d "$T/pdir" ] && [ -L "$T/pdang.png" ] && [ ! -e "$T/nowhere.png" ] && pass "the refused paths are as they were" ||
@@ -243,7 +243,7 @@ done
 if [ "$(id -u)" = 0 ]; then
     # a /dev/full of the test's own (as root the rename replaced the device node)
     mknod -m 666 "$T/pfull" c 1 7
-    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/pfull" >/dev/null 2>"$T/err"; expect_rc $? 2 "live --plot onto a device"
+    timeout $LIMIT "$H" live /dev/nonexistent-port --plot "$T/pfull" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --plot onto a device"
     grep_in "$T/err" "cannot write $T/pfull: not a regular file" "live --plot onto a device: the reason said"
     [ -c "$T/pfull" ] && pass "the device node is left as it was" || fail "the device node was replaced"
     rm -f "$T/pfull"
