@@ -818,6 +818,10 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
                  strerror(errno));
         return -1;
     }
+    /* the text now goes to standard error beside the messages: a line at
+     * a time (block-buffered, an error landed inside a table's line, and
+     * the text of a run a signal stopped was lost) */
+    (void)setvbuf(stdout, NULL, _IOLBF, 0);
     return 0;
 }
 

@@ -183,6 +183,17 @@ if [ -w /dev/full ]; then
     expect_err "^harness simgap-validate: error: /dev/full: write failed (No space left on device)" \
         "simgap-validate --markdown: the failed write said"
 fi
+# allan's --out - sends its text to standard error, where it was
+# block-buffered: the failed write's error (a closed pipe, a full disk)
+# landed inside a table's line ("... LSQ fit oharness allan: error:
+# standard output: ..."); now a line at a time, every message starts its line
+if [ -w /dev/full ]; then
+    sh -c '"$0" allan vectors/walk.bin --no-sim --out - 2>"$1" >/dev/full' "$H" "$T/lb_err"
+    if grep -q '.harness allan: ' "$T/lb_err"; then fail "allan --out - onto a full disk: a message inside a line of text"
+    elif grep -q '^harness allan: error: standard output: write failed' "$T/lb_err"; then
+        pass "allan --out - onto a full disk: the messages on lines of their own"
+    else fail "allan --out - onto a full disk: no write error said"; fi
+fi
 # a file-size limit (ulimit -f) reached: SIGXFSZ killed replay without a
 # word (exit 153), its JSON not written; now the write fails (EFBIG), named,
 # exit 3, and the JSON written with what was done
