@@ -709,6 +709,15 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                         s->profile_name);
             }
             hx_profile_bias_eq6(&s->profile);
+            {
+                /* the bias sd read by eq. 6 within the limits a file's is
+                 * held to (montecarlo's filter takes the same values) */
+                char perr[HX_ERR_SIZE];
+                if (hx_profile_check(&s->profile, perr, sizeof perr) != 0) {
+                    hx_error(cmd, "profile %s read by --bias-sigma eq6: %s", s->profile_name, perr);
+                    return -1;
+                }
+            }
         }
         if (fnav_imuerr_config_from_profile(&s->err, &s->profile) != FNAV_OK) {
             hx_error(cmd, "profile %s is not valid for the error model: a noise density, correlation time or bias sd "

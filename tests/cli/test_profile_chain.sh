@@ -269,6 +269,12 @@ limit_case 's/^accel_tau_s = .*/accel_tau_s = 100 100 0.0005/' "8: accel_tau_s v
 limit_case 's/^gyro_tau_s = .*/gyro_tau_s = 1e10 100 100/' "11: gyro_tau_s value 1 '1e10' outside \[0.001, 1e+09\]"
 limit_case 's/^rate_hz = .*/rate_hz = 1e-40/' "6: rate_hz '1e-40' outside \[1, 1e+06\]"
 limit_case 's/^gyro_tau_s = .*/gyro_tau_s = 0x10 1 1/' "11: gyro_tau_s value 1 '0x10' is not a decimal number"
+# sim --bias-sigma eq6 rescales the bias sd by sqrt(tau rate) / 0.617: a file within the limits can leave them
+# (rate 1e6 Hz, tau 1000 s: 0.1 -> 5125): refused naming the key and eq6, not "not valid for the error model"
+sed 's/^rate_hz = .*/rate_hz = 1000000/; s/^accel_tau_s = .*/accel_tau_s = 1000 1000 1000/; s/^accel_bias_sigma_mps2 = .*/accel_bias_sigma_mps2 = 0.1 0.1 0.1/' \
+    "$T/ds.profile" >"$T/eq6.profile"
+expect_exit 2 "sim --bias-sigma eq6 past the limits" "$H" sim --duration 5 --out "$T/lim.bin" --bias-sigma eq6 --profile "$T/eq6.profile"
+expect_err "read by --bias-sigma eq6: accel_bias_sigma_mps2 value 1 5125.* outside \[1.0842e-19, 1000\]" "... the key named"
 # a name goes to stdout: an ESC in it is refused, not sent to the terminal
 sed 's/^name = .*/name = a\x1b[2Jb/' "$T/ds.profile" >"$T/bad.profile"
 bad_profile "with an ESC in its name" "bad.profile:5: name has a control character (byte 2, 0x1b)"
