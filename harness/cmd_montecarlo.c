@@ -312,8 +312,8 @@ static cJSON *num_array(const double *x, int n)
     return a;
 }
 
-static int write_json(const char *path, const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
-                      const char *fprofile, int eq6, unsigned seed)
+static int write_json(const char *path, const hx_mc_result_t *r, int runs_asked, const char *motion, double rate,
+                      const char *profile, const char *fprofile, int eq6, unsigned seed)
 {
     cJSON *root = cJSON_CreateObject(), *vars = cJSON_CreateArray();
     char err[HX_ERR_SIZE];
@@ -323,7 +323,9 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
     cJSON_AddStringToObject(root, "profile", profile);
     cJSON_AddStringToObject(root, "filter_profile", fprofile);
     cJSON_AddStringToObject(root, "bias_sigma", eq6 ? "eq6" : "given");
+    cJSON_AddBoolToObject(root, "complete", r->runs == runs_asked);
     cJSON_AddNumberToObject(root, "runs", r->runs);
+    cJSON_AddNumberToObject(root, "runs_asked", runs_asked);
     cJSON_AddNumberToObject(root, "first_seed", seed);
     cJSON_AddNumberToObject(root, "duration_s", r->duration_s);
     cJSON_AddNumberToObject(root, "distance_m", r->distance_m);
@@ -760,22 +762,32 @@ int hx_cmd_montecarlo(int argc, char **argv)
         mc.sim.duration_s = su.duration_s > 0.0 ? su.duration_s : hx_motion_duration(motion);
         mc.runs = (int)seeds;
         mc.bin_s = bin;
+        /* Ctrl-C or SIGTERM: no run is started after it, and the runs done
+         * are reported and written, marked incomplete (200 runs stopped at
+         * 80 lost all 80) */
+        hx_stop_on_signals("montecarlo", "run");
+        mc.stop = &hx_stop_sig;
         hx_progress_start(&pc.prog, "montecarlo", seeds);
         if (hx_mc_run(&mc, navs, nvar, &res, on_progress, &pc, err, sizeof err) != 0) {
             hx_progress_end(&pc.prog);
             hx_error("montecarlo", "%s", err);
             hx_motion_free(motion);
-            return HX_EXIT_USAGE;
+            return hx_stop_sig != 0 ? 128 + (int)hx_stop_sig : HX_EXIT_USAGE;
         }
         hx_progress_end(&pc.prog);
+        if (res.runs < mc.runs) {
+            hx_warn("montecarlo", "stopped by a signal after %d of %d runs: the results and outputs cover those runs "
+                                  "(JSON \"complete\": false)", res.runs, mc.runs);
+            status = 128 + (int)hx_stop_sig; /* as the shell reports a command a signal ended */
+        }
         /* an output to standard output ('-') takes it alone */
         if (!hx_flag(&a, "--quiet") && !(json != NULL && strcmp(json, "-") == 0) &&
             !(csv != NULL && strcmp(csv, "-") == 0)) {
             print_summary(&res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof,
                           su.bias_eq6 && hx_arg(&a, "--filter-profile") == NULL);
         }
-        if (json != NULL && write_json(json, &res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof,
-                                       su.bias_eq6, su.err.seed) != 0) {
+        if (json != NULL && write_json(json, &res, mc.runs, su.motion_name, (double)su.err.rate_hz, su.profile_name,
+                                       fprof, su.bias_eq6, su.err.seed) != 0) {
             status = HX_EXIT_IO;
         }
         if (csv != NULL && write_csv(csv, &res) != 0) {

@@ -50,23 +50,8 @@ static const hx_spec_t k_spec = {
     0, 0, k_opts
 };
 
-/* Ctrl-C or SIGTERM: the run stops before its next case and reports the
- * cases it ran (a full run takes 13 minutes; they were lost). The handler
- * is reset by the first signal, so a second one ends the command at once. */
-static volatile sig_atomic_t g_stop;
-
-static void on_signal(int sig)
-{
-    static const char msg[] = "\nsimgap-validate: stopping after the current case (a second signal quits at once)\n";
-    ssize_t w;
-    g_stop = sig;
-    w = write(STDERR_FILENO, msg, sizeof msg - 1); /* async-signal-safe; nothing to do if stderr is gone */
-    (void)w;
-}
-
 int hx_cmd_simgap_validate(int argc, char **argv)
 {
-    struct sigaction sa;
     int rc;
     hx_args_t a;
     sgv_opts_t o = sgv_opts_default();
@@ -148,13 +133,10 @@ int hx_cmd_simgap_validate(int argc, char **argv)
         hx_error("simgap-validate", "out of memory");
         return HX_EXIT_IO;
     }
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sa.sa_flags = (int)SA_RESETHAND;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    o.stop = &g_stop;
+    /* Ctrl-C or SIGTERM: the run stops before its next case and reports
+     * the cases it ran (a full run takes 13 minutes; they were lost) */
+    hx_stop_on_signals("simgap-validate", "case");
+    o.stop = &hx_stop_sig;
     t0 = hx_now_s();
     rc = sgv_run(&o, cases, o.quiet ? NULL : stdout, err, sizeof err);
     t0 = hx_now_s() - t0;
@@ -167,8 +149,8 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     } else if (rc > 0) {
         hx_warn("simgap-validate", "interrupted: the report covers the cases run before the signal");
         snprintf(why, sizeof why, "interrupted by %s: the report covers the cases run before the signal",
-                 g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
-        status = 128 + (int)g_stop; /* as the shell reports a command a signal ended */
+                 hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
+        status = 128 + (int)hx_stop_sig; /* as the shell reports a command a signal ended */
     }
     sgv_report(stdout, &o, cases, (int)n, 0, t0);
     if (json != NULL && sgv_write_json(json, &o, cases, (int)n, t0, why[0] != '\0' ? why : NULL) != 0) {

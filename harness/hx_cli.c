@@ -750,6 +750,32 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
     return 0;
 }
 
+volatile sig_atomic_t hx_stop_sig = 0;
+static char g_stop_msg[160];
+static size_t g_stop_len;
+
+static void stop_handler(int sig)
+{
+    ssize_t w;
+    hx_stop_sig = sig;
+    w = write(STDERR_FILENO, g_stop_msg, g_stop_len); /* async-signal-safe; nothing to do if stderr is gone */
+    (void)w;
+}
+
+void hx_stop_on_signals(const char *cmd, const char *step)
+{
+    struct sigaction sa;
+    const int n = snprintf(g_stop_msg, sizeof g_stop_msg, "\n%s: stopping after the current %s (a second signal quits "
+                                                          "at once)\n", cmd, step);
+    g_stop_len = n < 0 ? 0u : (size_t)n < sizeof g_stop_msg ? (size_t)n : sizeof g_stop_msg - 1u;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = stop_handler;
+    sa.sa_flags = (int)SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    (void)sigaction(SIGINT, &sa, NULL);
+    (void)sigaction(SIGTERM, &sa, NULL);
+}
+
 FILE *hx_json_stdout = NULL;
 
 /* argv[*i] is option `name`, as `name VALUE` or `name=VALUE` (hx_args_parse

@@ -6,6 +6,7 @@
 #ifndef HX_CLI_H
 #define HX_CLI_H
 
+#include <signal.h>
 #include <stdio.h>
 #include "hx_log.h"
 
@@ -263,6 +264,17 @@ const char *hx_errno_note(int e, char *buf, size_t size);
  *  work, checked before it. 0, or -1 with the error printed (exit
  *  HX_EXIT_IO). */
 int hx_check_outputs(const char *cmd, const hx_args_t *a, const char *const *files, const char *const *pngs);
+
+/** The signal that asked a long command to stop (SIGINT, SIGTERM), 0 while
+ *  none came: set by the handler hx_stop_on_signals installs. */
+extern volatile sig_atomic_t hx_stop_sig;
+/** Ctrl-C and SIGTERM stop the work at its next step instead of ending the
+ *  process: the handler sets hx_stop_sig and says "CMD: stopping after the
+ *  current STEP (a second signal quits at once)" on standard error; it is
+ *  reset by the first signal, so a second one ends the command at once.
+ *  The command reports and writes what it did, marked incomplete, and exits
+ *  128 + hx_stop_sig (docs/harness.md, "Stopping a command"). */
+void hx_stop_on_signals(const char *cmd, const char *step);
 
 /** Where `--json -` (and allan's and psd's `--out -`) writes: the
  *  process's standard output, kept aside by hx_json_stdout_claim (main.c)

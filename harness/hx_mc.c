@@ -224,6 +224,15 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
         buf.cap = nt;
     }
     for (r = 0; r < cfg->runs; r++) {
+        if (cfg->stop != NULL && *cfg->stop) {
+            /* stopped (Ctrl-C): the runs done are the result */
+            if (r == 0) {
+                snprintf(err, err_size, "stopped before the first run was done");
+                goto out;
+            }
+            res->runs = r;
+            break;
+        }
         sc = cfg->sim;
         sc.err.seed = cfg->sim.err.seed + (uint32_t)r;
         buf.n = 0;

@@ -15,6 +15,7 @@
 #ifndef HX_MC_H
 #define HX_MC_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -105,6 +106,8 @@ typedef struct {
     hx_sim_config_t sim;   /**< motion and sensor model; sim.err.seed is the seed of run 0 */
     int runs;              /**< number of seeds (run r uses seed + r) */
     double bin_s;          /**< bin width of the growth curves, s (default 1) */
+    const volatile sig_atomic_t *stop; /**< nonzero (a signal's handler): no run started after it, the result holds
+                                   the runs done (NULL: run them all) */
 } hx_mc_config_t;
 
 /** Progress callback: runs done, with the fraction of the run under way
@@ -114,8 +117,10 @@ typedef void (*hx_mc_progress_fn)(void *ctx, double done, int total);
 
 /**
  * Run the Monte Carlo.
- * @return 0, or -1 with a one-line message in err (configuration, memory,
- *         a navigator failing to start or to accept input).
+ * @return 0 (res->runs the runs done: fewer than cfg->runs when cfg->stop
+ *         was set), or -1 with a one-line message in err (configuration,
+ *         memory, a navigator failing to start or to accept input, stopped
+ *         before a run was done).
  */
 int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_result_t *res,
               hx_mc_progress_fn progress, void *progress_ctx, char *err, size_t err_size);

@@ -301,5 +301,27 @@ if [ "$rc" -eq 0 ] && grep -q "final horizontal error   mean [0-9.]* m (+- 0.000
     pass "identical runs: the mean's interval is +- 0.000"
 else fail "identical runs (exit $rc): $(grep 'final horizontal' "$T/out")"; fi
 
+# stopped by a signal (SIGTERM here; Ctrl-C is SIGINT, which a shell's
+# background job ignores): 200 runs stopped part-way lost every run done,
+# the old outputs left as they were; now no run starts after it and the
+# runs done are reported and written, marked incomplete, exit 143
+printf 'old' > "$T/stop.json"
+"$H" montecarlo --seeds 200 --duration 30 --json "$T/stop.json" --csv "$T/stop.csv" >"$T/stop_out" 2>"$T/stop_err" &
+mc_pid=$!
+sleep 3
+if kill -TERM "$mc_pid" 2>/dev/null; then
+    wait "$mc_pid"; mc_rc=$?
+    [ "$mc_rc" -eq 143 ] && pass "montecarlo stopped by SIGTERM: exit 143" || fail "montecarlo stopped by SIGTERM: exit $mc_rc"
+    grep -q "warning: stopped by a signal after [0-9]* of 200 runs" "$T/stop_err" && pass "... the runs done said" ||
+        fail "... no word of the runs done: $(tail -c 300 "$T/stop_err")"
+    json "$T/stop.json" 'j["complete"] is False and 0 < j["runs"] < 200 == j["runs_asked"] and len(j["variants"][0]["final_h_m"]) == j["runs"]' &&
+        pass "... the JSON holds the runs done, incomplete" || fail "... the JSON: $(head -c 200 "$T/stop.json")"
+    [ "$(grep -c . "$T/stop.csv")" -gt 2 ] && pass "... the CSV written" || fail "... no CSV"
+    grep -q "^montecarlo  [0-9]* seeds of 'walk'" "$T/stop_out" && pass "... the summary printed" || fail "... no summary"
+else
+    wait "$mc_pid"
+    echo "SKIP montecarlo stopped by SIGTERM: it ended within 3 s"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
