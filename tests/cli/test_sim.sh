@@ -59,10 +59,11 @@ if grep -q "below the 20 Hz" "$T/err"; then fail "standing at 5 Hz: warned as a 
 expect_exit 0 "saturation at its smallest range" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --effect saturation:range=1e-9
 expect_exit 0 "quantisation at its smallest step" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --effect quant:lsb=1e-12
 # a profile outside the error model's ranges is named as such (it blamed
-# --effect options that were never given)
+# --effect options that were never given): at its line with its key, as the
+# loader holds every value to the ranges of the commands that use it
 sed 's/^accel_tau_s.*/accel_tau_s = 5e-4 100 100/' docs/profiles/generic-mems.profile > "$T/tau.profile"
 expect_exit 2 "a profile with a correlation time under 1 ms" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --profile "$T/tau.profile"
-expect_err "not valid for the error model" "the profile named, not the effects"
+expect_err "tau.profile:13: accel_tau_s value 1 '5e-4' outside \[0.001, 1e+09\]" "the profile named, not the effects"
 expect_exit 2 "unknown profile" "$H" sim --out "$T/x.bin" --profile nosuchprofile
 expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
 expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
