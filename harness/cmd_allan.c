@@ -137,6 +137,7 @@ typedef struct {
     char sensor_text[80]; /* the text header's: the sensor, or "FORMAT log" when the log names none */
     int is_series;
     int exact;               /* --estimator exact */
+    int m_given;             /* --m: its every m is printed, not the octave ones only */
     double f0;               /* --fractional: nominal value, 0 if not given */
     hx_dev_t dev[HX_DEV_COUNT]; /* --deviation, in the order given */
     int ndev;
@@ -299,6 +300,38 @@ static int parse_m_list(run_t *R, const char *list)
         return -1;
     }
     return 0;
+}
+
+/* --m: the factors the screen tables leave out, named, not dropped without
+ * a word: an m with no Allan term (2 m + 1 phase points needed, the record
+ * has n + 1) and one beyond --max-tau-frac (in --out and --json only). */
+static double tau_max_samples(const run_t *R);
+static void m_dropped(const run_t *R)
+{
+    char none[512] = "", far[512] = "";
+    size_t i, ln = 0u, lf = 0u;
+    for (i = 0; i < R->ngrid; i++) {
+        const uint32_t m = R->grid[i];
+        if (2.0 * (double)m >= (double)R->n + 1.0) {
+            if (ln < sizeof none) {
+                ln += (size_t)snprintf(none + ln, sizeof none - ln, "%s%lu", ln > 0u ? ", " : "", (unsigned long)m);
+            }
+        } else if ((double)m > tau_max_samples(R) * (1.0 + 1e-9)) {
+            if (lf < sizeof far) {
+                lf += (size_t)snprintf(far + lf, sizeof far - lf, "%s%lu", lf > 0u ? ", " : "", (unsigned long)m);
+            }
+        }
+    }
+    if (ln > 0u) {
+        hx_warn(CMD, "%s: --m %s: too long for the record (an Allan term needs 2 m + 1 phase points, %lu samples "
+                     "give %lu): no Allan point, left out of every table",
+                R->source, none, (unsigned long)R->n, (unsigned long)R->n + 1ul);
+    }
+    if (lf > 0u) {
+        hx_warn(CMD, "%s: --m %s: beyond --max-tau-frac %g of the record (%.6g samples): not printed nor "
+                     "identified, tabulated in --out and --json only",
+                R->source, far, R->tau_max_frac, tau_max_samples(R));
+    }
 }
 
 /* The streaming estimators' configuration chunks over R->grid; with
@@ -1339,7 +1372,7 @@ static void print_deviations(const run_t *R, const chan_t *ch)
         printf("  %9s %10s %9s %5s %12s %12s %12s\n", "m", "tau_s", "terms", "alpha", "min", "sigma", "max");
         for (i = 0; i < ch->nres; i++) {
             const uint32_t m = ch->res[i].tau;
-            if (!in_range(R, &ch->res[i]) || (m & (m - 1u)) != 0u || ch->dv_terms[k][i] == 0u) {
+            if (!in_range(R, &ch->res[i]) || (!R->m_given && (m & (m - 1u)) != 0u) || ch->dv_terms[k][i] == 0u) {
                 continue;
             }
             printf("  %9lu %10.4g %9lu %5d %12s %12s %12s\n", (unsigned long)m, (double)m / R->rate_hz,
@@ -1361,13 +1394,13 @@ static void print_table(const run_t *R, const chan_t *ch)
 {
     size_t i;
     char b1[32], b2[32], b3[32], b4[32];
-    printf("\n%s [%s], %lu samples at %g Hz (octave tau shown; every tau in --out)\n", ch->label, ch->unit,
-           (unsigned long)R->n, R->rate_hz);
+    printf("\n%s [%s], %lu samples at %g Hz (%s; every tau in --out)\n", ch->label, ch->unit,
+           (unsigned long)R->n, R->rate_hz, R->m_given ? "every --m within --max-tau-frac shown" : "octave tau shown");
     printf("  %10s %9s %12s %12s %12s %9s %12s %8s %6s %5s  %s\n", "tau_s", "m", "oadev", "ci_lo", "ci_hi", "terms",
            "adev", "terms_n", "slope", "alpha", "noise");
     for (i = 0; i < ch->nres; i++) {
         const fnav_allan_result_t *r = &ch->res[i];
-        if (!in_range(R, r) || (r->tau & (r->tau - 1u)) != 0u) {
+        if (!in_range(R, r) || (!R->m_given && (r->tau & (r->tau - 1u)) != 0u)) {
             continue;
         }
         printf("  %10.4g %9lu %12s %12s %12s %9lu %12s %8lu %6.2f %4d%s  %s\n", (double)r->tau / R->rate_hz,
@@ -2559,6 +2592,14 @@ int hx_cmd_allan(int argc, char **argv)
         free(R);
         return HX_EXIT_USAGE;
     }
+    if (hx_arg(&a, "--m") != NULL && hx_arg(&a, "--per-octave") != NULL) {
+        /* --per-octave spaces the log grid that --m replaces: refused, not
+         * ignored without a word, exit 0 */
+        hx_error(CMD, "--per-octave spaces the log-spaced grid, which --m replaces: give one of them");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    R->m_given = hx_arg(&a, "--m") != NULL;
     if (setup_grid(R, per_octave, hx_arg(&a, "--m")) != 0) {
         free(R);
         return HX_EXIT_USAGE;
@@ -2614,6 +2655,9 @@ int hx_cmd_allan(int argc, char **argv)
         free_run(R);
         free(R);
         return HX_EXIT_DATA;
+    }
+    if (R->m_given) {
+        m_dropped(R);
     }
     if (input_rc > 0) {
         hx_warn(CMD, "analysing the %lu samples before the error", (unsigned long)R->n);

@@ -1232,5 +1232,23 @@ expect_exit 0 "a series with blank lines before and after its numbers" "$H" alla
 if grep -q 'blank line' "$T/err"; then fail "blank lines at the ends warned: $(cat "$T/err")"
 else pass "blank lines before the first number and after the last: silent"; fi
 
+
+# --- --m: every m given is printed (the screen tables kept the powers of two only: --m 1,10,100 showed tau 1,
+# --m 3,10 nothing); an m too long for the record and one beyond --max-tau-frac are named, not dropped without
+# a word; --per-octave, which spaces the grid --m replaces, is refused, not ignored
+head -n 2000 "$T/w12k.txt" >"$T/w2k.txt"
+expect_exit 0 "--m 1,10,100" "$H" allan --series "$T/w2k.txt" --rate 1 --no-sim --m 1,10,100 --deviation mdev
+for m in 1 10 100; do
+    [ "$(awk -v m=$m '$1 == m && $2 == m' "$T/out" | wc -l)" -eq 2 ] && pass "--m 1,10,100: m = $m in the table and mdev's" ||
+        fail "--m 1,10,100: m = $m not in both tables: $(cat "$T/out")"
+done
+expect_exit 0 "--m 3,10,1000,5000" "$H" allan --series "$T/w2k.txt" --rate 1 --no-sim --m 3,10,1000,5000
+expect_out_re "^ +3 +3 " "--m 3,...: m = 3 printed"
+expect_out_re "^ +10 +10 " "--m ...,10,...: m = 10 printed"
+expect_err "--m 5000: too long for the record" "--m: an m without an Allan term is named"
+expect_err "--m 1000: beyond --max-tau-frac 0.1" "--m: an m beyond --max-tau-frac is named"
+expect_exit 2 "--per-octave with --m" "$H" allan --series "$T/w2k.txt" --rate 1 --no-sim --m 1,10 --per-octave 2
+expect_err "--per-octave spaces the log-spaced grid, which --m replaces" "--per-octave with --m: refused, named"
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
