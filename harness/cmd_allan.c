@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "footnav/fnav_allan.h"
 #include "hx_allan_ident.h"
@@ -407,8 +408,18 @@ static int record(chan_t *ch, double v)
     return 0;
 }
 
+/* The exact estimator's input range, of a value less the first: the
+ * streaming estimator's is the core's (FNAV_INPUT_MAX_ABS, 1e6, a float's
+ * sums), which the record in double does not need. Its own limit is where
+ * the numbers overflow: a spread S gives an Allan variance up to 2 S^2,
+ * kept in the result rows' fnav_real_t (the float build's FLT_MAX, 3.4e38:
+ * S 1e18, at 1e19 it would be inf), and in the double build sums of
+ * squared phase differences that grow with n and m (S 1e100 leaves them
+ * 1e100 below DBL_MAX). */
+#define HX_ALLAN_EXACT_MAX_ABS (sizeof(fnav_real_t) < sizeof(double) ? 1e18 : 1e100)
+
 /* Push a sample into the channel's streaming estimators, or its record
- * (--estimator exact; the same input range as the core's).
+ * (--estimator exact; within HX_ALLAN_EXACT_MAX_ABS).
  * @return 0; -1 when refused (not finite, or beyond the input range); -2 when out of memory */
 static int push_all(run_t *R, chan_t *ch, double v)
 {
@@ -419,7 +430,7 @@ static int push_all(run_t *R, chan_t *ch, double v)
         ch->varied = 1;
     }
     if (R->exact) {
-        return isfinite(v) && fabs(v) <= FNAV_INPUT_MAX_ABS ? record(ch, v) : -1;
+        return isfinite(v) && fabs(v) <= HX_ALLAN_EXACT_MAX_ABS ? record(ch, v) : -1;
     }
     for (c = 0; c < R->nchunk; c++) {
         if (fnav_allan_push(ch->est[c], (fnav_real_t)v) != FNAV_OK) {
@@ -845,6 +856,21 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     return rc;
 }
 
+/* The shortest of %.15g, %.16g and %.17g that reads back as v: two values
+ * that differ print apart (%g printed 1e+300 for both 1e300 and
+ * 1.0000001e300), a round one without %.17g's tail (9.9999999999999997e+199) */
+static const char *fmt_full(char *b, size_t n, double v)
+{
+    int p;
+    for (p = 15; p <= 17; p++) {
+        snprintf(b, n, "%.*g", p, v);
+        if (strtod(b, NULL) == v) {
+            break;
+        }
+    }
+    return b;
+}
+
 /* Push one value of a series. The first value is removed here, in double, so
  * that a large offset (a 10 MHz frequency counted to the mHz) keeps its
  * digits in the float core; the Allan variance ignores a constant. */
@@ -859,8 +885,19 @@ static int push_series(run_t *R, const char *path, long lineno, double y, double
     if (prc == -2) {
         input_fail(R, "%s:%ld: %s", path, lineno, k_exact_oom);
     } else if (prc != 0) {
-        input_fail(R, "%s:%ld: %g differs from the first value, %g, by more than the estimator's input range (%g)",
-                 path, lineno, y, *first, FNAV_INPUT_MAX_ABS);
+        char by[32], bf[32];
+        fmt_full(by, sizeof by, y);
+        fmt_full(bf, sizeof bf, *first);
+        if (R->exact) {
+            input_fail(R, "%s:%ld: %s differs from the first value, %s, by more than the exact estimator's "
+                          "range (%g): scale the values down (a power of ten, with --unit)",
+                       path, lineno, by, bf, HX_ALLAN_EXACT_MAX_ABS);
+        } else {
+            input_fail(R, "%s:%ld: %s differs from the first value, %s, by more than the streaming "
+                          "estimator's input range (%g, the core's): use --estimator exact (up to %g) or scale the "
+                          "values down (a power of ten, with --unit)",
+                       path, lineno, by, bf, FNAV_INPUT_MAX_ABS, HX_ALLAN_EXACT_MAX_ABS);
+        }
     }
     return prc;
 }
@@ -897,62 +934,137 @@ static void series_fail(run_t *R, const char *binary, const char *fmt, ...)
     hx_error(CMD, "%s", R->input_error);
 }
 
-/* Read one line of a series into buf (NUL-terminated, the newline kept, as
- * fgets does): the number of bytes read, 0 at the end of the file. *nul: a
- * NUL byte was among them (fgets would hide it: the line would end there).
- * getc_unlocked: one thread reads the file, and the locking getc costs a
- * third more time on a long series */
-static size_t series_line(FILE *f, char *buf, size_t size, int *nul)
+/* A series read through zlib (a .gz transparently, as the logs): its first
+ * bytes are read once into head, looked at, and handed out before the rest,
+ * so that a pipe (read once, never rewound) is read as a file is. */
+#define SERIES_HEAD 600
+#define SERIES_LINE_MAX (1u << 20) /* a longer line is refused: no unbounded buffer for a file without newlines */
+typedef struct {
+    gzFile gz;
+    unsigned char head[SERIES_HEAD];
+    size_t nhead, ihead;
+    char *line;        /* the line read, NUL-terminated, its newline kept */
+    size_t cap;
+    int eof;           /* the end of the data (or a read error: series_error()) was met */
+    int read_errno;    /* errno after a failing read */
+} series_in_t;
+
+/* The next byte, or EOF at the end of the data or on an error. */
+static int series_getc(series_in_t *in)
+{
+    if (in->ihead < in->nhead) {
+        return in->head[in->ihead++];
+    }
+    errno = 0;
+    {
+        const int c = gzgetc(in->gz);
+        if (c < 0) {
+            in->eof = 1;
+            in->read_errno = in->read_errno != 0 ? in->read_errno : errno; /* the first failing read's */
+        }
+        return c;
+    }
+}
+
+/* A zlib or read error met (0 if none), its text in msg. */
+static int series_error(series_in_t *in, char *msg, size_t n)
+{
+    int e;
+    const char *zm = gzerror(in->gz, &e);
+    if (e == Z_OK || e == Z_STREAM_END) {
+        return 0;
+    }
+    if (e == Z_BUF_ERROR) {
+        snprintf(msg, n, "the gzip data ends early (a truncated .gz, e.g. an incomplete copy)");
+    } else if (e == Z_ERRNO) {
+        snprintf(msg, n, "read error (%s)", strerror(in->read_errno != 0 ? in->read_errno : EIO));
+    } else {
+        snprintf(msg, n, "read error (%s)", zm);
+    }
+    return 1;
+}
+
+/* Read one line of a series into in->line (NUL-terminated, the newline
+ * kept, as fgets does): the number of bytes read, 0 at the end of the file.
+ * The buffer grows with the line (a CSV of a thousand columns, --column N
+ * of them), up to SERIES_LINE_MAX; *cut: the line was longer, and only its
+ * start is in the buffer. *nul: a NUL byte was among them (fgets would
+ * hide it: the line would end there). */
+static size_t series_line(series_in_t *in, int *nul, int *cut)
 {
     size_t n = 0;
     int c = 0;
     *nul = 0;
-    while (n + 1 < size && (c = getc_unlocked(f)) != EOF) {
-        buf[n++] = (char)c;
+    *cut = 0;
+    if (in->cap == 0u) {
+        in->line = (char *)malloc(4096u);
+        if (in->line == NULL) {
+            return 0;
+        }
+        in->cap = 4096u;
+    }
+    while ((c = series_getc(in)) != EOF) {
+        if (n + 2u > in->cap) {
+            char *p;
+            if (in->cap >= SERIES_LINE_MAX || (p = (char *)realloc(in->line, 2u * in->cap)) == NULL) {
+                *cut = 1;
+                break;
+            }
+            in->line = p;
+            in->cap *= 2u;
+        }
+        in->line[n++] = (char)c;
         *nul |= c == 0;
         if (c == '\n') {
             break;
         }
     }
-    buf[n] = '\0';
-    return n;
+    in->line[n] = '\0';
+    return *cut ? n + 1u : n;
 }
 
 /* column: 0 for one number per line, else the 1-based column to take */
 static int read_series(run_t *R, const char *path, int phase, long column)
 {
-    FILE *f = fopen(path, "r");
-    char line[1024];
-    char head_msg[HX_ERR_SIZE];
+    series_in_t in;
+    char head_msg[HX_ERR_SIZE], rd_msg[HX_ERR_SIZE];
     const char *binary = NULL; /* the binary-data message until a number is read */
     long lineno = 0;
     /* blank lines after the first number: pending until a number follows
      * (those at the file's end stay silent), then counted in blanks */
     long pending = 0, pending_first = 0, blanks = 0, blank_first = 0;
-    int data_lines = 0, rc = 0, have_prev = 0, have_first = 0, nul = 0;
+    int data_lines = 0, rc = 0, have_prev = 0, have_first = 0, nul = 0, cut = 0;
     double prev = 0.0, first = 0.0;
-    if (f == NULL) {
-        hx_error(CMD, "%s: cannot open (%s)", path, strerror(errno));
+    memset(&in, 0, sizeof in);
+    errno = 0;
+    in.gz = gzopen(path, "rb"); /* a .gz read transparently, as a log is */
+    if (in.gz == NULL) {
+        hx_error(CMD, "%s: cannot open (%s)", path, errno != 0 ? strerror(errno) : "gzopen failed");
         return -1;
     }
-    if (fseek(f, 0L, SEEK_CUR) == 0) {
+    (void)gzbuffer(in.gz, 1u << 16);
+    {
         /* its first bytes, as the log readers' (hx_head_not_text): UTF-16
          * refused at once with its iconv remedy, binary data named if no
-         * number comes. A pipe, which cannot be read twice, is not looked
-         * at first */
-        unsigned char head[600];
-        const size_t got = fread(head, 1, sizeof head, f);
-        const hx_head_t kind = hx_head_not_text(path, head, got, 1, head_msg, sizeof head_msg);
-        rewind(f);
-        if (kind == HX_HEAD_UTF16 || kind == HX_HEAD_CONTAINER) {
-            hx_error(CMD, "%s", head_msg);
-            fclose(f);
-            return -1;
+         * number comes. Kept and handed out before the rest: a pipe is read
+         * once, never rewound */
+        int got;
+        errno = 0;
+        got = gzread(in.gz, in.head, (unsigned)sizeof in.head);
+        in.read_errno = errno;
+        in.nhead = got > 0 ? (size_t)got : 0u;
+        if (got > 0) {
+            const hx_head_t kind = hx_head_not_text(path, in.head, in.nhead, 1, head_msg, sizeof head_msg);
+            if (kind == HX_HEAD_UTF16 || kind == HX_HEAD_CONTAINER) {
+                hx_error(CMD, "%s", head_msg);
+                gzclose(in.gz);
+                return -1;
+            }
+            binary = kind == HX_HEAD_BINARY ? head_msg : NULL;
         }
-        binary = kind == HX_HEAD_BINARY ? head_msg : NULL;
     }
-    while (series_line(f, line, sizeof line, &nul) > 0) {
-        char *p = line, *end;
+    while (series_line(&in, &nul, &cut) > 0) {
+        char *p = in.line, *end;
         double v;
         long k;
         lineno++;
@@ -962,9 +1074,10 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             rc = 1;
             break;
         }
-        if (strchr(line, '\n') == NULL && !feof(f)) {
+        if (cut) {
             /* a longer line would be read in pieces, each taken for a line */
-            series_fail(R, binary, "%s:%ld: line longer than %d characters", path, lineno, (int)sizeof line - 2);
+            series_fail(R, binary, "%s:%ld: line longer than %u characters", path, lineno,
+                        (unsigned)(in.cap - 2u));
             rc = 1;
             break;
         }
@@ -1036,13 +1149,15 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             R->n++;
         }
     }
-    if (rc == 0 && ferror(f)) {
+    if (rc == 0 && series_error(&in, rd_msg, sizeof rd_msg)) {
         /* not the end of the series: a directory said "no numbers", a
-         * failing read mid-file ended the series there, complete */
-        input_fail(R, "%s: read error (%s)", path, strerror(errno));
+         * failing read mid-file (or a truncated .gz) ended the series
+         * there, complete */
+        input_fail(R, "%s: %s", path, rd_msg);
         rc = 1;
     }
-    fclose(f);
+    gzclose(in.gz);
+    free(in.line);
     if (blanks > 0) {
         /* a blank line is no sample: if one stood for a missing value,
          * every later value is one sample early, so the skipped lines are
@@ -1281,11 +1396,11 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         est[c] = (fnav_allan_t *)malloc(sizeof(fnav_allan_t));
         ok = est[c] != NULL && fnav_allan_init(est[c], &R->cfg[c]) == FNAV_OK;
     }
-    for (k = 0; ok && k < nsim; k++) {
+    for (k = 0; ok == 1 && k < nsim; k++) {
         const fnav_real_t v = (fnav_real_t)hx_noise_sim_next(&s);
         for (c = 0; c < R->nchunk; c++) {
             if (fnav_allan_push(est[c], v) != FNAV_OK) {
-                ok = 0;
+                ok = -2; /* beyond the core's input range (a --series of large values, exact estimator) */
             }
         }
         if ((k & 65535u) == 0u) {
@@ -1293,7 +1408,7 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         }
     }
     *done += (double)nsim;
-    if (ok) {
+    if (ok == 1) {
         const double keep = ch->scale;
         ch->scale = 1.0; /* already in display units */
         collect(R, ch, est, out);
@@ -1303,7 +1418,7 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         free(est[c]);
     }
     hx_noise_sim_free(&s);
-    return ok ? 0 : -1;
+    return ok == 1 ? 0 : ok == -2 ? -2 : -1;
 }
 
 /* ------------------------------------------------------------ output */
@@ -2730,12 +2845,20 @@ int hx_cmd_allan(int argc, char **argv)
         for (i = 0; i < R->nch; i++) {
             chan_t *ch = &R->ch[i];
             const unsigned long seed = (unsigned long)seed_d + 1000ul * (unsigned long)i;
+            int src = 0, srf = 0;
             if (ch->id_ok && ch->id.paper_ok) {
-                ch->have_sim_paper =
-                    simulate(R, ch, &ch->id.paper_model, nsim, seed, ch->sim_paper, &pr, &done, total) == 0;
+                src = simulate(R, ch, &ch->id.paper_model, nsim, seed, ch->sim_paper, &pr, &done, total);
+                ch->have_sim_paper = src == 0;
             }
             if (ch->id_ok && ch->id.fit_ok) {
-                ch->have_sim_fit = simulate(R, ch, &ch->id.fit, nsim, seed + 1u, ch->sim_fit, &pr, &done, total) == 0;
+                srf = simulate(R, ch, &ch->id.fit, nsim, seed + 1u, ch->sim_fit, &pr, &done, total);
+                ch->have_sim_fit = srf == 0;
+            }
+            if (src == -2 || srf == -2) {
+                /* a series beyond the core's range, which the exact estimator reads: no curve, said */
+                hx_warn(CMD, "%s: %s: simulation check skipped: the model's samples are beyond the streaming "
+                             "estimator's input range (%g) it runs through",
+                        R->source, ch->name, FNAV_INPUT_MAX_ABS);
             }
         }
         hx_progress_end(&pr);

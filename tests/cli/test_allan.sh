@@ -17,9 +17,27 @@ expect_exit 2 "series without rate" "$H" allan --series /dev/null
 expect_exit 2 "log and series" "$H" allan x.csv --series y.txt --rate 1
 expect_exit 2 "bad per-octave" "$H" allan --series x --rate 1 --per-octave 3
 expect_exit 1 "missing file" "$H" allan "$T/nope.csv"
-printf "1\n1e30\n2\n" > "$T/big.txt"
+printf "1\n1e200\n2\n" > "$T/big.txt"
 expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.txt" --rate 100
-expect_err "big.txt:2: 1e+30 differs from the first value, 1, by more than" "the rejected value is named with its line"
+expect_err "big.txt:2: 1e+200 differs from the first value, 1, by more than the exact estimator's range (1e+" \
+    "the rejected value is named with its line and the remedy"
+# the exact estimator (a record in double) is not held to the core's 1e6 (a float's sums): white noise x 1e10 gives
+# the ADEV x 1e10; the streaming one refuses it, naming --estimator exact; %.17g tells numbers %g printed alike
+"$PY" -c 'import random; random.seed(5); print("\n".join("%.15g" % random.gauss(0, 1) for _ in range(3000)))' >"$T/g1.txt"
+awk '{ printf "%.15g\n", $1 * 1e10 }' "$T/g1.txt" >"$T/g10.txt"
+expect_exit 0 "a series spreading 1e10, exact" "$H" allan --series "$T/g10.txt" --rate 1 --no-sim --quiet --json "$T/g10.json"
+expect_exit 0 "its unit series" "$H" allan --series "$T/g1.txt" --rate 1 --no-sim --quiet --json "$T/g1.json"
+"$PY" -c 'import json, sys
+a, b = (json.load(open(f))["channels"][0]["table"] for f in sys.argv[1:3])
+sys.exit(0 if len(a) == len(b) > 5 and all(abs(y["oadev"] / (1e10 * x["oadev"]) - 1) < 1e-6 for x, y in zip(a, b)) else 1)' \
+    "$T/g1.json" "$T/g10.json" && pass "exact estimator, values x 1e10: the ADEV x 1e10" || fail "exact estimator x 1e10"
+expect_exit 1 "a series spreading 1e10, streaming" "$H" allan --series "$T/g10.txt" --rate 1 --no-sim --quiet \
+    --estimator streaming
+expect_err "input range (1e+06, the core's): use --estimator exact" "streaming: the remedy named"
+printf '1e300\n1.0000001e300\n' >"$T/e300.txt"
+expect_exit 1 "1e300 then 1.0000001e300" "$H" allan --series "$T/e300.txt" --rate 1 --no-sim --quiet
+expect_err "e300.txt:2: 1.0000001e+300 differs from the first value, 1e+300," \
+    "the refused value and the first printed apart (as many digits as they need)"
 expect_exit 2 "--fractional with --phase" "$H" allan --series "$T/big.txt" --rate 1 --phase --fractional 1e7
 expect_exit 2 "--fractional of a log" "$H" allan vectors/walk.bin --fractional 1e7
 # the log's options with a series are refused, not ignored without a word, exit 0 (`--series F --channels gx`
@@ -35,8 +53,30 @@ expect_err "--channels: an empty element in ','" "empty --channels explained"
 expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
 # two numbers 300 blanks apart on one line: refused, not read as two lines
 awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 1100; j++) printf " "; print "2.0" } }' > "$T/long.txt"
-expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
-expect_err "long.txt:1: line longer than" "the long line is named"
+expect_exit 1 "two numbers 1100 blanks apart on a series line" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
+expect_err "long.txt:1: expected one number per line" "two numbers on a long line: one line, not two"
+# a line over the reader's 1 MiB: refused (no buffer as large as a file without newlines), named
+awk 'BEGIN { printf "1.0"; for (j = 0; j < 1100000; j++) printf " "; print "" }' > "$T/huge.txt"
+expect_exit 1 "series line over 1 MiB" "$H" allan --series "$T/huge.txt" --rate 1 --no-sim
+expect_err "huge.txt:1: line longer than 1048574 characters" "the over-long line is named"
+# a 150-column CSV (--column accepts up to 1000): the line is no longer refused at 1022 characters
+awk 'BEGIN { s = 7; for (i = 0; i < 3000; i++) { for (j = 1; j <= 150; j++) { s = (s * 1103515245 + 12345) % 2147483648;
+    printf "%s%.12f", (j > 1 ? "," : ""), (j == 5 ? s / 2147483648.0 : 1000 + j) }; print "" } }' > "$T/wide.csv"
+cut -d, -f5 "$T/wide.csv" > "$T/wide5.txt"
+expect_exit 0 "a 150-column CSV, --column 5" "$H" allan --series "$T/wide.csv" --column 5 --rate 1 --no-sim --quiet
+mv "$T/out" "$T/wide.out"
+expect_exit 0 "its column 5 alone" "$H" allan --series "$T/wide5.txt" --rate 1 --no-sim --quiet
+cmp -s "$T/out" "$T/wide.out" && pass "a 150-column CSV's --column 5: as the column alone" ||
+    fail "a 150-column CSV's --column 5 differs from the column alone"
+# a .gz series is read through zlib, as a log is (it was refused as binary data), and a pipe still once
+gzip -c "$T/wide5.txt" > "$T/wide5.txt.gz"
+expect_exit 0 "a .gz series" "$H" allan --series "$T/wide5.txt.gz" --rate 1 --no-sim --quiet
+cmp -s "$T/out" "$T/wide.out" && pass "a .gz series: as the text" || fail "a .gz series differs from the text"
+cat "$T/wide5.txt" | "$H" allan --series /dev/stdin --rate 1 --no-sim --quiet >"$T/out" 2>"$T/err" &&
+    cmp -s "$T/out" "$T/wide.out" && pass "a series through a pipe" || fail "a series through a pipe: $(cat "$T/err")"
+head -c $(($(wc -c <"$T/wide5.txt.gz") / 2)) "$T/wide5.txt.gz" > "$T/cut.txt.gz"
+expect_exit 1 "a truncated .gz series" "$H" allan --series "$T/cut.txt.gz" --rate 1 --no-sim --quiet
+expect_err "cut.txt.gz: the gzip data ends early (a truncated .gz" "a truncated .gz series: named"
 # a NUL byte in a series (binary data, e.g. a logger's unwritten blocks): named as the log readers name it,
 # mid-file (not called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
 # not read as 1.0, exit 0); the numbers before it are analysed
