@@ -112,8 +112,10 @@ typedef struct {
     int constant;    /* every tau with terms has variance 0: a stuck or disconnected channel */
     double v_first;  /* the first value pushed, and whether a later one differed from it */
     int varied;
+    double spread;   /* the largest |value - first value| (exact estimator's underflow check) */
     double avar_least; /* least positive Allan variance (display units; the exact one in double); INFINITY: none */
-    int underflow;     /* avar_least is below the float build's normal range: digits lost */
+    int underflow;     /* avar_least is below the float build's normal range: digits lost; 2: the exact
+                        * estimator's double range (a spread whose square underflows) */
     /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
@@ -428,6 +430,9 @@ static int push_all(run_t *R, chan_t *ch, double v)
         ch->v_first = v;
     } else if (v != ch->v_first) {
         ch->varied = 1;
+        if (fabs(v - ch->v_first) > ch->spread) {
+            ch->spread = fabs(v - ch->v_first);
+        }
     }
     if (R->exact) {
         return isfinite(v) && fabs(v) <= HX_ALLAN_EXACT_MAX_ABS ? record(ch, v) : -1;
@@ -1339,7 +1344,23 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
         ch->underflow = 1;
         ch->constant = 0;
     }
-    if (ch->underflow) {
+    if (R->exact && ch->varied && (isinf(ch->avar_least) || ch->avar_least < DBL_MIN) &&
+        ch->spread < sqrt(DBL_MIN / DBL_EPSILON)) {
+        /* the record is in double, but a series that varies by 1e-200
+         * squares to 0 there: every variance 0, which read as a constant
+         * channel ("stuck channel", exit 0); a spread whose square is
+         * subnormal or less keeps fewer digits than a double's. (Not a
+         * variance 0 of values that vary widely: --m at their period.) */
+        ch->underflow = 2;
+        ch->constant = 0;
+    }
+    if (ch->underflow == 2) {
+        hx_error(CMD, "%s: %s: the values vary by at most %.3g %s, whose squares (the Allan variance, %.3g %s^2) are "
+                      "below a double's range (%.3g): its digits are lost; scale the values up (a power of ten, "
+                      "with --unit)",
+                 R->source, ch->name, ch->spread * ch->scale, ch->unit,
+                 isinf(ch->avar_least) ? 0.0 : ch->avar_least, ch->unit, DBL_MIN);
+    } else if (ch->underflow) {
         hx_error(CMD, "%s: %s: an Allan variance of %.3g %s^2 is below the float build's range (%.3g): its "
                       "digits are lost; scale the values up (a power of ten, with --unit) or use the double build "
                       "(FNAV_USE_DOUBLE=1)",

@@ -842,6 +842,20 @@ for e in exact streaming; do
 done
 printf '1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n' >"$T/alt.txt"
 expect_exit 0 "an exact 0 of quantised data is no underflow" "$H" allan --series "$T/alt.txt" --rate 1 --no-sim --quiet
+# white noise of 1e-200: its squares underflow in double too; the exact estimator (whose underflow test looked at
+# the float core's only) said "series is constant ... stuck channel", every ADEV 0, exit 0: now an error, exit 1,
+# as the streaming one's. Values 1, 2 at --m 2 (their period: variance 0, values far from underflow) stay constant
+"$PY" -c "
+import random
+r = random.Random(4)
+print('\n'.join('%.6e' % (1e-200 * r.gauss(0, 1)) for _ in range(3000)))" >"$T/tiny200.txt"
+expect_exit 1 "a series of 1e-200, exact" "$H" allan --series "$T/tiny200.txt" --rate 1 --no-sim --quiet
+expect_err "tiny200.txt: series: the values vary by at most .* below a double's range" "exact: the underflow said"
+if grep -q "constant" "$T/err"; then fail "a series of 1e-200 called constant"; else pass "a series of 1e-200: not constant"; fi
+awk 'BEGIN { for (i = 0; i < 100; i++) print i % 2 + 1 }' >"$T/alt100.txt"
+expect_exit 0 "1, 2, ... at --m 2: a variance 0, no underflow" "$H" allan --series "$T/alt100.txt" --rate 1 --no-sim \
+    --quiet --m 2 --max-tau-frac 0.5
+expect_err "series is constant" "1, 2, ... at --m 2: constant at that m, as before"
 # a --name with a line break wrote a profile line of its own (a second rate_hz): exit 0, and no command
 # could read the profile; refused before anything is read
 expect_exit 2 "--name with a line break" "$H" allan vectors/walk.bin --no-sim --profile "$T/nl.profile" \
