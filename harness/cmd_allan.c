@@ -6,10 +6,12 @@
 #include <errno.h>
 #include <float.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include "footnav/fnav_allan.h"
@@ -120,7 +122,7 @@ typedef struct {
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
     uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
-    unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: over --max-work */
+    unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: 1 over --max-work, 2 interrupted (a signal) */
 } chan_t;
 
 typedef struct {
@@ -163,7 +165,26 @@ typedef struct {
     size_t win_cap;          /* windows win_spread holds room for */
     int moving;              /* over HX_ALLAN_MOVING_FRAC of the windows move: not a static log */
     char input_error[HX_ERR_SIZE];   /* the error that stopped the input ("": read to its end; input_fail) */
+    char interrupted[HX_ERR_SIZE];   /* what a signal left undone ("": not interrupted) */
+    hx_progress_t *dev_pr;   /* --deviation: the progress of the deviation tables (NULL: none shown) */
+    double dev_done, dev_total; /* their work done and in all (dev_cost units) */
 } run_t;
+
+/* Ctrl-C or SIGTERM after the record is read: the deviation tables and the
+ * Fig. 7 simulation stop, and what is done is printed and written, marked
+ * incomplete, exit 128 + the signal (as simgap-validate). The handler is
+ * reset by the first signal, so a second one ends the command at once. */
+static volatile sig_atomic_t g_stop;
+
+static void on_signal(int sig)
+{
+    static const char msg[] = "\nallan: stopping: what is done is printed and written (a second signal quits at "
+                              "once)\n";
+    ssize_t w;
+    g_stop = sig;
+    w = write(STDERR_FILENO, msg, sizeof msg - 1); /* async-signal-safe; nothing to do if stderr is gone */
+    (void)w;
+}
 
 /* An error of the input that stops the reading: said, and kept for the
  * JSON's `error` (beside `complete`), so that the JSON tells a record read
@@ -1238,7 +1259,15 @@ static void exact_table(const run_t *R, chan_t *ch)
 
 /* --deviation: each requested deviation at every tau of the grid from the
  * record, with the interval of the tau's noise exponent (hx_devs.h). */
-static void deviation_tables(const run_t *R, chan_t *ch)
+/* The work of one deviation at one tau, for the progress shown: the window
+ * terms of a total form (hx_dev_work), at least the record's length. */
+static double dev_cost(hx_dev_t k, size_t n, uint32_t m)
+{
+    const double w = (double)hx_dev_work(k, n, m);
+    return w > (double)n ? w : (double)n;
+}
+
+static void deviation_tables(run_t *R, chan_t *ch)
 {
     int j;
     size_t i;
@@ -1247,12 +1276,21 @@ static void deviation_tables(const run_t *R, chan_t *ch)
         for (i = 0; i < ch->nres; i++) {
             const uint32_t m = ch->res[i].tau;
             double v;
+            if (g_stop) {
+                ch->dv_skip[k][i] = 2u; /* interrupted: not computed, said in the table, CSV empty, JSON */
+                ch->dv_terms[k][i] = 0u;
+                continue;
+            }
             if ((double)hx_dev_work(k, ch->nx, m) > R->max_work) {
                 ch->dv_skip[k][i] = 1u;
                 ch->dv_terms[k][i] = 0u;
                 continue;
             }
             v = hx_dev_var_record(k, ch->x, ch->nx, m, &ch->dv_terms[k][i]);
+            if (R->dev_pr != NULL) {
+                R->dev_done += dev_cost(k, ch->nx, m);
+                hx_progress_update(R->dev_pr, R->dev_done / R->dev_total);
+            }
             const double dev = sqrt(v) * ch->scale * hx_dev_scale(k, m, R->rate_hz);
             ch->dv[k][i] = dev;
             ch->dv_edf[k][i] = ch->dv_terms[k][i] > 0u ? hx_dev_edf(k, ch->alpha[i], m, ch->nx) : -1.0;
@@ -1426,6 +1464,9 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         }
         if ((k & 65535u) == 0u) {
             hx_progress_update(pr, (*done + (double)k) / total);
+            if (g_stop) {
+                ok = -3; /* interrupted: no curve */
+            }
         }
     }
     *done += (double)nsim;
@@ -1439,7 +1480,7 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         free(est[c]);
     }
     hx_noise_sim_free(&s);
-    return ok == 1 ? 0 : ok == -2 ? -2 : -1;
+    return ok == 1 ? 0 : ok < 0 ? ok : -1;
 }
 
 /* ------------------------------------------------------------ output */
@@ -1516,10 +1557,14 @@ static void print_deviations(const run_t *R, const chan_t *ch)
                    fmt_g(b2, sizeof b2, ch->dv[k][i]), fmt_g(b3, sizeof b3, ch->dv_hi[k][i]));
         }
         for (i = 0; i < ch->nres; i++) {
-            if (ch->dv_skip[k][i]) {
+            if (ch->dv_skip[k][i] == 1u) {
                 printf("  m >= %lu not computed: more than %g window terms per tau (the cost is O(n m)); raise "
                        "--max-work\n",
                        (unsigned long)ch->res[i].tau, R->max_work);
+                break;
+            }
+            if (ch->dv_skip[k][i] == 2u) {
+                printf("  m >= %lu not computed: the run was interrupted\n", (unsigned long)ch->res[i].tau);
                 break;
             }
         }
@@ -1773,7 +1818,7 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
         cJSON *o = cJSON_AddObjectToObject(e, hx_dev_name(d));
         cJSON_AddNumberToObject(o, "terms", (double)ch->dv_terms[d][k]);
         if (ch->dv_skip[d][k]) {
-            cJSON_AddStringToObject(o, "not_computed", "max_work");
+            cJSON_AddStringToObject(o, "not_computed", ch->dv_skip[d][k] == 2u ? "interrupted" : "max_work");
         }
         if (ch->dv_terms[d][k] > 0u) {
             hx_json_num(o, "dev", ch->dv[d][k]);
@@ -1813,9 +1858,13 @@ static int write_json(const run_t *R, const char *path)
     }
     /* as info's, replay's, psd's and simgap's: false when the input
      * stopped at an error, the tables covering the samples before it */
-    cJSON_AddBoolToObject(root, "complete", R->input_error[0] == '\0');
-    if (R->input_error[0] != '\0') {
-        cJSON_AddStringToObject(root, "error", R->input_error);
+    cJSON_AddBoolToObject(root, "complete", R->input_error[0] == '\0' && R->interrupted[0] == '\0');
+    if (R->input_error[0] != '\0' || R->interrupted[0] != '\0') {
+        /* a signal (Ctrl-C) as simgap-validate's: "interrupted by SIGINT: ..." */
+        cJSON_AddStringToObject(root, "error", R->input_error[0] != '\0' ? R->input_error : R->interrupted);
+    }
+    if (R->interrupted[0] != '\0') {
+        cJSON_AddStringToObject(root, "interrupted", R->interrupted);
     }
     arr = cJSON_AddArrayToObject(root, "channels");
     for (i = 0; i < R->nch; i++) {
@@ -2838,12 +2887,57 @@ int hx_cmd_allan(int argc, char **argv)
         hx_error(CMD, "%s: %s", path, R->units_msg);
         exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
-    for (i = 0; i < R->nch; i++) {
-        analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
-        if (R->ch[i].underflow) {
-            exit_code = worse_exit(exit_code, HX_EXIT_DATA);
+    {
+        /* from here on a signal stops the slow stages (the deviation
+         * tables, the simulation check), and what is done is written */
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sa.sa_flags = (int)SA_RESETHAND;
+        sigemptyset(&sa.sa_mask);
+        g_stop = 0;
+        sigaction(SIGINT, &sa, NULL);
+        sigaction(SIGTERM, &sa, NULL);
+    }
+    {
+        hx_progress_t dpr;
+        if (R->ndev > 0) {
+            /* the total forms on a long record take minutes: their progress
+             * (the reading's went on to "done" and then nothing was said) */
+            int j;
+            size_t g;
+            R->dev_total = 0.0;
+            for (i = 0; i < R->nch; i++) {
+                for (j = 0; j < R->ndev; j++) {
+                    for (g = 0; g < R->ngrid; g++) {
+                        if (!((double)hx_dev_work(R->dev[j], R->ch[i].nx, R->grid[g]) > R->max_work)) {
+                            R->dev_total += dev_cost(R->dev[j], R->ch[i].nx, R->grid[g]);
+                        }
+                    }
+                }
+            }
+            if (R->dev_total > 0.0) {
+                hx_progress_start(&dpr, "allan: deviations", 1.0);
+                R->dev_pr = &dpr;
+            }
         }
-        npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+        for (i = 0; i < R->nch; i++) {
+            analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
+            if (R->ch[i].underflow) {
+                exit_code = worse_exit(exit_code, HX_EXIT_DATA);
+            }
+            npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+        }
+        if (R->dev_pr != NULL) {
+            hx_progress_end(&dpr);
+            R->dev_pr = NULL;
+        }
+        if (g_stop) {
+            snprintf(R->interrupted, sizeof R->interrupted,
+                     "interrupted by %s in the deviation tables: those from there on not computed, the "
+                     "simulation check not run",
+                     g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
+        }
     }
     if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
         /* the paper's sigma_v, the ADEV at 1 s, lies beyond the tenth of the
@@ -2855,7 +2949,9 @@ int hx_cmd_allan(int argc, char **argv)
                 R->source, npaper, npaper == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
                 (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
-    if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
+    if (g_stop) {
+        /* interrupted above: no simulation */
+    } else if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");
     } else if (!hx_flag(&a, "--no-sim")) {
         const uint32_t nsim = nsim_d > 0.0 ? (uint32_t)nsim_d : R->n;
@@ -2875,6 +2971,17 @@ int hx_cmd_allan(int argc, char **argv)
                 srf = simulate(R, ch, &ch->id.fit, nsim, seed + 1u, ch->sim_fit, &pr, &done, total);
                 ch->have_sim_fit = srf == 0;
             }
+            if (src == -3 || srf == -3 || g_stop) {
+                ch->have_sim_paper = ch->have_sim_fit = 0;
+                snprintf(R->interrupted, sizeof R->interrupted,
+                         "interrupted by %s in the simulation check: no simulated curve (the tables and the "
+                         "identification are complete)",
+                         g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
+                for (; i < R->nch; i++) {
+                    R->ch[i].have_sim_paper = R->ch[i].have_sim_fit = 0;
+                }
+                break;
+            }
             if (src == -2 || srf == -2) {
                 /* a series beyond the core's range, which the exact estimator reads: no curve, said */
                 hx_warn(CMD, "%s: %s: simulation check skipped: the model's samples are beyond the streaming "
@@ -2885,6 +2992,10 @@ int hx_cmd_allan(int argc, char **argv)
         hx_progress_end(&pr);
     }
 
+    if (g_stop) {
+        hx_warn(CMD, "%s; what is done is printed and written (JSON complete false)", R->interrupted);
+        exit_code = 128 + (int)g_stop; /* as the shell reports a command a signal ended */
+    }
     if (!hx_flag(&a, "--quiet")) {
         printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
                (unsigned long)R->n, R->rate_hz, (int)R->ngrid);
@@ -2923,6 +3034,9 @@ int hx_cmd_allan(int argc, char **argv)
         if (rc != 0) {
             exit_code = worse_exit(exit_code, rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO);
         }
+    }
+    if (g_stop && exit_code != HX_EXIT_IO) {
+        exit_code = 128 + (int)g_stop; /* not a data error found after it (the profile's refusal) */
     }
     free_run(R);
     free(R);

@@ -1304,5 +1304,45 @@ expect_err "--m 1000: beyond --max-tau-frac 0.1" "--m: an m beyond --max-tau-fra
 expect_exit 2 "--per-octave with --m" "$H" allan --series "$T/w2k.txt" --rate 1 --no-sim --m 1,10 --per-octave 2
 expect_err "--per-octave spaces the log-spaced grid, which --m replaces" "--per-octave with --m: refused, named"
 
+
+# --- a signal during the slow stages: the deviation tables (minutes on a long log, and nothing said after
+# "reading: done") show their progress, and Ctrl-C or SIGTERM there or in the simulation check stopped the run
+# with nothing written; now what is done is printed and written (JSON complete false, "interrupted"), exit 128 +
+# the signal. wait_line FILE PATTERN: until the progress line is there (20 s at most)
+wait_line() {
+    k=0
+    while [ $k -lt 200 ] && ! grep -q "$2" "$1" 2>/dev/null; do sleep 0.1; k=$((k + 1)); done
+}
+"$PY" -c 'import random; random.seed(8); print("\n".join("%.9g" % random.gauss(0, 1) for _ in range(100000)))' \
+    >"$T/w100k.txt"
+"$H" allan --series "$T/w100k.txt" --rate 1 --deviation all --no-sim --out "$T/int.csv" --json "$T/int.json" \
+    >"$T/int.out" 2>"$T/int.err" &
+p=$!
+wait_line "$T/int.err" "allan: deviations:"
+kill -INT "$p" 2>/dev/null
+wait "$p"; rc=$?
+[ "$rc" -eq 130 ] && pass "SIGINT in the deviation tables: exit 130" || fail "SIGINT in the deviation tables: exit $rc"
+grep -q "allan: deviations:" "$T/int.err" && pass "the deviation tables show their progress" ||
+    fail "no progress of the deviation tables: $(cat "$T/int.err")"
+json "$T/int.json" '(j["complete"] is False and j["interrupted"].startswith("interrupted by SIGINT in the deviation tables")
+    and j["error"] == j["interrupted"] and len(j["channels"][0]["table"]) > 10
+    and any(e["mtotdev"].get("not_computed") == "interrupted" for e in j["channels"][0]["table"]))' &&
+    pass "SIGINT: the JSON written, complete false, interrupted, the deviations not computed marked" ||
+    fail "SIGINT: the JSON: $(head -c 600 "$T/int.json")"
+[ "$(grep -c '^series,' "$T/int.csv")" -gt 10 ] && pass "SIGINT: the CSV written" || fail "SIGINT: no CSV rows"
+grep -q "not computed: the run was interrupted" "$T/int.out" && grep -q "^ *1 *1 " "$T/int.out" &&
+    pass "SIGINT: the tables printed, the deviations cut said" || fail "SIGINT: the printed tables: $(head -20 "$T/int.out")"
+"$H" allan --series "$T/w100k.txt" --rate 1 --sim-samples 2000000000 --json "$T/sim.json" --quiet \
+    >"$T/int.out" 2>"$T/int.err" &
+p=$!
+wait_line "$T/int.err" "allan: simulating"
+kill -TERM "$p" 2>/dev/null
+wait "$p"; rc=$?
+[ "$rc" -eq 143 ] && pass "SIGTERM in the simulation check: exit 143" || fail "SIGTERM in the simulation: exit $rc"
+json "$T/sim.json" '(j["complete"] is False and "SIGTERM in the simulation check" in j["interrupted"]
+    and j["channels"][0]["paper"].get("sigma_v") is not None)' &&
+    pass "SIGTERM in the simulation: the JSON written with the identification" ||
+    fail "SIGTERM in the simulation: the JSON: $(head -c 600 "$T/sim.json")"
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
