@@ -63,7 +63,8 @@ static const hx_opt_t k_opts[] = {
                      "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
     { "--out", "FILE", "table of every channel and tau (CSV; '-': standard output, the text then on standard error)", 0 },
-    { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
+    { "--json", "FILE", "parameters, quality and tables (JSON; '-': standard output, the text then on standard "
+                        "error; not with --out -)", 0 },
     { "--plot", "FILE", "Allan deviation plot (PNG): measured with confidence bars, simulated", 0 },
     { "--profile", "FILE", "write the corrected identification as a footnav profile", 0 },
     { "--quiet", NULL, "print only the parameter table", 0 },
@@ -701,7 +702,8 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     hx_progress_t pr;
     int64_t t_prev = 0, t_first = 0; /* the last and the first sample's stamps */
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
-    long irregular = 0, gaps = 0;
+    long irregular = 0, gaps = 0, repeats = 0; /* repeats: intervals of 0, a time stamp written twice */
+    long run = 0; /* the intervals of 0 right before this one: samples that share a stamp */
     double missing = 0.0, longest_gap_s = 0.0; /* samples the gaps lost (round(dt / T) - 1 each), the longest gap */
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     /* the first HX_STAMPS_PROBE_N stamps, for the test of stamps in bursts
@@ -754,13 +756,20 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * millisecond reads 2 and 3 ms) may differ by their resolution
              * as well, or every interval of such a uniform log would be
              * counted (as psd's; the gcd so far is never below the final one) */
+            /* a stamp written twice (0, 10, 10, 30 ms) is no sample lost: the
+             * interval after it spans the two periods of the samples there
+             * (it said "about 1 samples missing"); as many periods fewer are
+             * missing as samples shared the stamp before */
+            const double lost = hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns) - (double)run;
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
-            if (hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns) > 0.0) {
+            repeats += s.t_ns == t_prev;
+            if (lost > 0.0) {
                 const double dt_s = (double)(s.t_ns - t_prev) * 1e-9;
                 gaps++;
-                missing += hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns);
+                missing += lost;
                 longest_gap_s = dt_s > longest_gap_s ? dt_s : longest_gap_s;
             }
+            run = s.t_ns == t_prev ? run + 1 : 0;
         }
         if (R->n == 0) {
             t_first = s.t_ns;
@@ -806,19 +815,26 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         input_fail(R, "%s", hx_reader_error(r));
         rc = 1;
     }
-    if (irregular > 0 && gaps > 0) {
+    if (irregular > 0) {
         /* the gaps said with what they lost: the series is read as if its
          * samples were consecutive (a 60 s hole in an hour was only "3
-         * intervals differ") */
-        hx_warn(CMD, "%s: %ld intervals differ from 1/rate by more than 10 %%, %ld of them gaps (longest %.3g s; "
-                     "about %.0f samples missing in all, %.2g %% of the log): the Allan variance assumes uniform "
-                     "sampling, and the samples are joined across the gaps as if consecutive",
-                path, irregular, gaps, longest_gap_s, missing,
-                100.0 * missing / ((double)R->n + missing > 0.0 ? (double)R->n + missing : 1.0));
-    } else if (irregular > 0) {
-        hx_warn(CMD, "%s: %ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
-                     "sampling",
-                path, irregular);
+         * intervals differ"); a stamp written twice said as such */
+        char rep[96] = "", gap[192] = "";
+        if (repeats > 0) {
+            snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
+                     repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
+        }
+        if (gaps > 0) {
+            snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
+                                      "of the log)",
+                     gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
+                     100.0 * missing / ((double)R->n + missing > 0.0 ? (double)R->n + missing : 1.0));
+        }
+        hx_warn(CMD, "%s: %ld interval%s from 1/rate by more than 10 %%%s%s: the Allan variance assumes uniform "
+                     "sampling%s",
+                path, irregular, irregular == 1 ? " differs" : "s differ", rep, gap,
+                gaps > 1 ? ", and the samples are joined across the gaps as if consecutive"
+                : gaps == 1 ? ", and the samples are joined across the gap as if consecutive" : "");
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
         /* not with --rate, which sets the rate the analysis takes; the

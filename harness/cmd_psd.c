@@ -41,8 +41,10 @@ static const hx_opt_t k_opts[] = {
     { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
     { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
     { "--out", "FILE", "PSD and CCDF of every axis (CSV; '-': standard output, the text then on standard error)", 0 },
-    { "--json", "FILE", "settings, per-axis and overall answers, sensitivity (JSON)", 0 },
-    { "--plot", "DIR", "psd.png (Fig. 3), ccdf.png (Fig. 4), spectrogram.png (Fig. 6), sensitivity.png", 0 },
+    { "--json", "FILE", "settings, per-axis and overall answers, sensitivity (JSON; '-': standard output, the "
+                        "text then on standard error; not with --out -)", 0 },
+    { "--plot", "DIR", "psd.png (Fig. 3), ccdf.png (Fig. 4), spectrogram.png (Fig. 6), and sensitivity.png with "
+                       "--sensitivity", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -844,11 +846,11 @@ int hx_cmd_psd(int argc, char **argv)
         }
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */
-            hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
-                     (unsigned)nfft);
+            hx_error(CMD, "%s (the %zu sample%s before it %s fewer than one %u-sample segment)", log.error, log.n,
+                     log.n == 1u ? "" : "s", log.n == 1u ? "is" : "are", (unsigned)nfft);
         } else {
-            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment; %s", a.pos[0], log.n, (unsigned)nfft,
-                     fix);
+            hx_error(CMD, "%s: %zu sample%s, fewer than one %u-sample segment; %s", a.pos[0], log.n,
+                     log.n == 1u ? "" : "s", (unsigned)nfft, fix);
         }
         hx_log_free(&log);
         return HX_EXIT_DATA;
@@ -868,7 +870,8 @@ int hx_cmd_psd(int argc, char **argv)
          * the intervals' gcd: every interval of such a uniform log was
          * counted as irregular. */
         size_t i;
-        long irregular = 0;
+        long irregular = 0, gaps = 0, repeats = 0, run = 0; /* run: the intervals of 0 right before */
+        double missing = 0.0, longest_gap_s = 0.0;
         int64_t res_ns = 0;
         if (log.meta.rate_coarse) {
             for (i = 1; i < log.n; i++) {
@@ -878,12 +881,38 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         for (i = 1; i < log.n; i++) {
-            irregular += hx_interval_irregular(log.t_ns[i] - log.t_ns[i - 1], rate, res_ns);
+            const int64_t dt = log.t_ns[i] - log.t_ns[i - 1];
+            /* the gaps with what they lost, as allan's warning (a 5 s hole
+             * was only "1 of 4999 intervals differ"); a stamp written twice
+             * (0, 10, 10, 30 ms) is no sample lost: as many periods fewer
+             * after it as samples shared the stamp */
+            const double lost = hx_interval_missing(dt, rate, res_ns) - (double)run;
+            irregular += hx_interval_irregular(dt, rate, res_ns);
+            repeats += dt == 0;
+            run = dt == 0 ? run + 1 : 0;
+            if (lost > 0.0) {
+                gaps++;
+                missing += lost;
+                longest_gap_s = 1e-9 * (double)dt > longest_gap_s ? 1e-9 * (double)dt : longest_gap_s;
+            }
         }
         if (irregular > 0) {
-            hx_warn(CMD, "%ld of %zu intervals differ from 1/%.4g s by more than 10 %%: Welch assumes uniform "
-                         "sampling",
-                    irregular, log.n - 1, rate);
+            char rep[96] = "", gap[192] = "";
+            if (repeats > 0) {
+                snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
+                         repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
+            }
+            if (gaps > 0) {
+                snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g "
+                                          "%% of the log)",
+                         gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
+                         100.0 * missing / ((double)log.n + missing));
+            }
+            hx_warn(CMD, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s%s: Welch assumes uniform "
+                         "sampling%s",
+                    irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, rep, gap,
+                    gaps > 1 ? ", and the samples are joined across the gaps as if consecutive"
+                : gaps == 1 ? ", and the samples are joined across the gap as if consecutive" : "");
         }
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,

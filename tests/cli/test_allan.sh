@@ -1344,5 +1344,20 @@ json "$T/sim.json" '(j["complete"] is False and "SIGTERM in the simulation check
     pass "SIGTERM in the simulation: the JSON written with the identification" ||
     fail "SIGTERM in the simulation: the JSON: $(head -c 600 "$T/sim.json")"
 
+# a time stamp written twice (0, 10, 10, 30 ms) was "1 of them gaps (...; about 1 samples missing ...)": a repeated
+# stamp is no sample lost; one interval "1 interval differs", a gap "1 of them a gap"; --help says --json - works
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) { t = i / 100; if (i == 1001) t = 10.00
+    printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", t, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50,
+        (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 } }' >"$T/rep.csv"
+expect_exit 0 "a time stamp written twice" "$H" allan "$T/rep.csv" --no-sim --quiet
+expect_err "rep.csv: 2 intervals differ from 1/rate by more than 10 %, 1 of them a time stamp repeated: the Allan" \
+    "a repeated stamp: said as such, no sample missing"
+awk -F, 'NR != 1003' "$T/rep.csv" >"$T/one_gap.csv"
+expect_exit 0 "one lost sample" "$H" allan "$T/one_gap.csv" --no-sim --quiet
+expect_err "one_gap.csv: 1 interval differs from 1/rate by more than 10 %, 1 of them a gap (longest 0.02 s; about 1 sample missing in all" \
+    "one lost sample: singular"
+"$H" allan --help >"$T/out" 2>&1
+expect_out "--json FILE .*'-': standard output" "allan --help: --json - said"
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"

@@ -434,7 +434,7 @@ expect_err "sample rate unknown: every time stamp is the same" "a bad line after
 # stamped CSV ignores)
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
-expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
+expect_err "1 sample, fewer than one 64-sample segment" "one sample: too short for a segment (singular)"
 expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples" "one sample: the least a segment needs"
 # 1001 samples with --nfft 4096: the error says what to do, not only what is missing
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 1001; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/k1.csv"
@@ -593,6 +593,23 @@ if command -v "$ARMCC" >/dev/null 2>&1 && command -v "$ARMNM" >/dev/null 2>&1; t
 else
     echo "skip: no $ARMCC (the core's Cortex-M4F objects)"
 fi
+
+# a 5 s gap was only "1 of 4999 intervals differ": its length and the samples it lost are said, as allan's; a
+# time stamp written twice (0, 10, 10, 30 ms) is said as such, not as a sample missing
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 5500; i++) { if (i >= 2000 && i < 2500) continue
+    printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50,
+        (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 } }' >"$T/gap5.csv"
+expect_exit 0 "a 5 s gap" "$H" psd "$T/gap5.csv"
+expect_err "1 of 4999 intervals differs from 1/100 s by more than 10 %, 1 of them a gap (longest 5.01 s; about 500 samples missing in all, 9.1 % of the log)" \
+    "a 5 s gap: its length and the samples lost"
+awk -F, 'NR == 1003 { $1 = "10.00" } { print }' OFS=, "$T/gap5.csv" >"$T/rep.csv"
+expect_exit 0 "a time stamp written twice" "$H" psd "$T/rep.csv"
+expect_err "1 of them a time stamp repeated, 1 of them a gap (longest 5.01 s; about 500 samples missing" \
+    "a repeated stamp: said, no sample missing for it"
+# --help: --json - and sensitivity.png's --sensitivity
+"$H" psd --help >"$T/out" 2>&1
+expect_out "--json FILE .*'-': standard output" "psd --help: --json - said"
+expect_out "sensitivity.png with --sensitivity" "psd --help: sensitivity.png needs --sensitivity"
 
 if [ "$fails" -ne 0 ]; then echo "test_psd.sh: $fails failure(s)"; exit 1; fi
 echo "test_psd.sh: all passed"
