@@ -2945,7 +2945,9 @@ int hx_cmd_allan(int argc, char **argv)
             npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
         }
         if (R->dev_pr != NULL) {
-            hx_progress_end(&dpr);
+            if (!g_stop) {
+                hx_progress_end(&dpr); /* "done": not said of a stage cut short (the warning below ends the line) */
+            }
             R->dev_pr = NULL;
         }
         if (g_stop) {
@@ -3005,7 +3007,9 @@ int hx_cmd_allan(int argc, char **argv)
                         R->source, ch->name, FNAV_INPUT_MAX_ABS);
             }
         }
-        hx_progress_end(&pr);
+        if (!g_stop) {
+            hx_progress_end(&pr);
+        }
     }
 
     if (g_stop) {
