@@ -171,22 +171,6 @@ typedef struct {
     double dev_done, dev_total; /* their work done and in all (dev_cost units) */
 } run_t;
 
-/* Ctrl-C or SIGTERM after the record is read: the deviation tables and the
- * Fig. 7 simulation stop, and what is done is printed and written, marked
- * incomplete, exit 128 + the signal (as simgap-validate). The handler is
- * reset by the first signal, so a second one ends the command at once. */
-static volatile sig_atomic_t g_stop;
-
-static void on_signal(int sig)
-{
-    static const char msg[] = "\nallan: stopping: what is done is printed and written (a second signal quits at "
-                              "once)\n";
-    ssize_t w;
-    g_stop = sig;
-    w = write(STDERR_FILENO, msg, sizeof msg - 1); /* async-signal-safe; nothing to do if stderr is gone */
-    (void)w;
-}
-
 /* An error of the input that stops the reading: said, and kept for the
  * JSON's `error` (beside `complete`), so that the JSON tells a record read
  * in part */
@@ -1292,7 +1276,7 @@ static void deviation_tables(run_t *R, chan_t *ch)
         for (i = 0; i < ch->nres; i++) {
             const uint32_t m = ch->res[i].tau;
             double v;
-            if (g_stop) {
+            if (hx_stop_sig) {
                 ch->dv_skip[k][i] = 2u; /* interrupted: not computed, said in the table, CSV empty, JSON */
                 ch->dv_terms[k][i] = 0u;
                 continue;
@@ -1480,7 +1464,7 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
         }
         if ((k & 65535u) == 0u) {
             hx_progress_update(pr, (*done + (double)k) / total);
-            if (g_stop) {
+            if (hx_stop_sig) {
                 ok = -3; /* interrupted: no curve */
             }
         }
@@ -2904,16 +2888,11 @@ int hx_cmd_allan(int argc, char **argv)
         exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
     {
-        /* from here on a signal stops the slow stages (the deviation
-         * tables, the simulation check), and what is done is written */
-        struct sigaction sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = on_signal;
-        sa.sa_flags = (int)SA_RESETHAND;
-        sigemptyset(&sa.sa_mask);
-        g_stop = 0;
-        sigaction(SIGINT, &sa, NULL);
-        sigaction(SIGTERM, &sa, NULL);
+        /* Ctrl-C or SIGTERM after the record is read: the slow stages (the
+         * deviation tables, the Fig. 7 simulation) stop, and what is done
+         * is printed and written, marked incomplete, exit 128 + the signal
+         * (as simgap-validate) */
+        hx_stop_on_signals(CMD, "the slow stages: what is done is printed and written");
     }
     {
         hx_progress_t dpr;
@@ -2945,16 +2924,16 @@ int hx_cmd_allan(int argc, char **argv)
             npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
         }
         if (R->dev_pr != NULL) {
-            if (!g_stop) {
+            if (!hx_stop_sig) {
                 hx_progress_end(&dpr); /* "done": not said of a stage cut short (the warning below ends the line) */
             }
             R->dev_pr = NULL;
         }
-        if (g_stop) {
+        if (hx_stop_sig) {
             snprintf(R->interrupted, sizeof R->interrupted,
                      "interrupted by %s in the deviation tables: those from there on not computed, the "
                      "simulation check not run",
-                     g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
+                     hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
         }
     }
     if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
@@ -2967,7 +2946,7 @@ int hx_cmd_allan(int argc, char **argv)
                 R->source, npaper, npaper == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
                 (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
-    if (g_stop) {
+    if (hx_stop_sig) {
         /* interrupted above: no simulation */
     } else if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");
@@ -2989,12 +2968,12 @@ int hx_cmd_allan(int argc, char **argv)
                 srf = simulate(R, ch, &ch->id.fit, nsim, seed + 1u, ch->sim_fit, &pr, &done, total);
                 ch->have_sim_fit = srf == 0;
             }
-            if (src == -3 || srf == -3 || g_stop) {
+            if (src == -3 || srf == -3 || hx_stop_sig) {
                 ch->have_sim_paper = ch->have_sim_fit = 0;
                 snprintf(R->interrupted, sizeof R->interrupted,
                          "interrupted by %s in the simulation check: no simulated curve (the tables and the "
                          "identification are complete)",
-                         g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
+                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
                 for (; i < R->nch; i++) {
                     R->ch[i].have_sim_paper = R->ch[i].have_sim_fit = 0;
                 }
@@ -3007,14 +2986,14 @@ int hx_cmd_allan(int argc, char **argv)
                         R->source, ch->name, FNAV_INPUT_MAX_ABS);
             }
         }
-        if (!g_stop) {
+        if (!hx_stop_sig) {
             hx_progress_end(&pr);
         }
     }
 
-    if (g_stop) {
+    if (hx_stop_sig) {
         hx_warn(CMD, "%s; what is done is printed and written (JSON complete false)", R->interrupted);
-        exit_code = 128 + (int)g_stop; /* as the shell reports a command a signal ended */
+        exit_code = 128 + (int)hx_stop_sig; /* as the shell reports a command a signal ended */
     }
     if (!hx_flag(&a, "--quiet")) {
         printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
@@ -3055,8 +3034,8 @@ int hx_cmd_allan(int argc, char **argv)
             exit_code = worse_exit(exit_code, rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO);
         }
     }
-    if (g_stop && exit_code != HX_EXIT_IO) {
-        exit_code = 128 + (int)g_stop; /* not a data error found after it (the profile's refusal) */
+    if (hx_stop_sig && exit_code != HX_EXIT_IO) {
+        exit_code = 128 + (int)hx_stop_sig; /* not a data error found after it (the profile's refusal) */
     }
     free_run(R);
     free(R);

@@ -765,7 +765,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
         /* Ctrl-C or SIGTERM: no run is started after it, and the runs done
          * are reported and written, marked incomplete (200 runs stopped at
          * 80 lost all 80) */
-        hx_stop_on_signals("montecarlo", "run");
+        hx_stop_on_signals("montecarlo", "after the current run");
         mc.stop = &hx_stop_sig;
         hx_progress_start(&pc.prog, "montecarlo", seeds);
         if (hx_mc_run(&mc, navs, nvar, &res, on_progress, &pc, err, sizeof err) != 0) {

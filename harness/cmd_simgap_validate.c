@@ -135,7 +135,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     }
     /* Ctrl-C or SIGTERM: the run stops before its next case and reports
      * the cases it ran (a full run takes 13 minutes; they were lost) */
-    hx_stop_on_signals("simgap-validate", "case");
+    hx_stop_on_signals("simgap-validate", "after the current case");
     o.stop = &hx_stop_sig;
     t0 = hx_now_s();
     rc = sgv_run(&o, cases, o.quiet ? NULL : stdout, err, sizeof err);

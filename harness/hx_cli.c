@@ -751,7 +751,7 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
 }
 
 volatile sig_atomic_t hx_stop_sig = 0;
-static char g_stop_msg[160];
+static char g_stop_msg[200];
 static size_t g_stop_len;
 
 static void stop_handler(int sig)
@@ -762,11 +762,11 @@ static void stop_handler(int sig)
     (void)w;
 }
 
-void hx_stop_on_signals(const char *cmd, const char *step)
+void hx_stop_on_signals(const char *cmd, const char *how)
 {
     struct sigaction sa;
-    const int n = snprintf(g_stop_msg, sizeof g_stop_msg, "\n%s: stopping after the current %s (a second signal quits "
-                                                          "at once)\n", cmd, step);
+    const int n = snprintf(g_stop_msg, sizeof g_stop_msg, "\n%s: stopping %s (a second signal quits at once)\n", cmd,
+                           how);
     g_stop_len = n < 0 ? 0u : (size_t)n < sizeof g_stop_msg ? (size_t)n : sizeof g_stop_msg - 1u;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = stop_handler;

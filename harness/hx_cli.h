@@ -269,12 +269,12 @@ int hx_check_outputs(const char *cmd, const hx_args_t *a, const char *const *fil
  *  none came: set by the handler hx_stop_on_signals installs. */
 extern volatile sig_atomic_t hx_stop_sig;
 /** Ctrl-C and SIGTERM stop the work at its next step instead of ending the
- *  process: the handler sets hx_stop_sig and says "CMD: stopping after the
- *  current STEP (a second signal quits at once)" on standard error; it is
+ *  process: the handler sets hx_stop_sig and says "CMD: stopping HOW (a
+ *  second signal quits at once)" on standard error; it is
  *  reset by the first signal, so a second one ends the command at once.
  *  The command reports and writes what it did, marked incomplete, and exits
  *  128 + hx_stop_sig (docs/harness.md, "Stopping a command"). */
-void hx_stop_on_signals(const char *cmd, const char *step);
+void hx_stop_on_signals(const char *cmd, const char *how);
 
 /** Where `--json -` (and allan's and psd's `--out -`) writes: the
  *  process's standard output, kept aside by hx_json_stdout_claim (main.c)
