@@ -117,6 +117,7 @@ typedef struct {
     int varied;
     double spread;   /* the largest |value - first value| (exact estimator's underflow check) */
     double avar_least; /* least positive Allan variance (display units; the exact one in double); INFINITY: none */
+    double avar_most;  /* the exact estimator's largest Allan variance (display units, double); 0: none */
     int underflow;     /* avar_least is below the float build's normal range: digits lost; 2: the exact
                         * estimator's double range (a spread whose square underflows) */
     /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
@@ -1013,9 +1014,10 @@ static int series_error(series_in_t *in, char *msg, size_t n)
 /* Read one line of a series into in->line (NUL-terminated, the newline
  * kept, as fgets does): the number of bytes read, 0 at the end of the file.
  * The buffer grows with the line (a CSV of a thousand columns, --column N
- * of them), up to SERIES_LINE_MAX; *cut: the line was longer, and only its
- * start is in the buffer. *nul: a NUL byte was among them (fgets would
- * hide it: the line would end there). */
+ * of them), up to SERIES_LINE_MAX; *cut: 1 the line was longer, and only
+ * its start is in the buffer; 2 no memory for it (not the end of the file,
+ * nor "longer than" the buffer's size then). *nul: a NUL byte was among
+ * them (fgets would hide it: the line would end there). */
 static size_t series_line(series_in_t *in, int *nul, int *cut)
 {
     size_t n = 0;
@@ -1025,15 +1027,20 @@ static size_t series_line(series_in_t *in, int *nul, int *cut)
     if (in->cap == 0u) {
         in->line = (char *)malloc(4096u);
         if (in->line == NULL) {
-            return 0;
+            *cut = 2;
+            return 1u;
         }
         in->cap = 4096u;
     }
     while ((c = series_getc(in)) != EOF) {
         if (n + 2u > in->cap) {
             char *p;
-            if (in->cap >= SERIES_LINE_MAX || (p = (char *)realloc(in->line, 2u * in->cap)) == NULL) {
+            if (in->cap >= SERIES_LINE_MAX) {
                 *cut = 1;
+                break;
+            }
+            if ((p = (char *)realloc(in->line, 2u * in->cap)) == NULL) {
+                *cut = 2;
                 break;
             }
             in->line = p;
@@ -1094,6 +1101,11 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         double v;
         long k;
         lineno++;
+        if (cut == 2) {
+            series_fail(R, NULL, "%s:%ld: out of memory for the line", path, lineno);
+            rc = 1;
+            break;
+        }
         if (nul) {
             series_fail(R, binary, "%s:%ld: " HX_NUL_TEXT,
                         path, lineno);
@@ -1254,6 +1266,9 @@ static void exact_table(const run_t *R, chan_t *ch)
         if (terms > 0u && ao > 0.0 && ao * ch->scale * ch->scale < ch->avar_least) {
             ch->avar_least = ao * ch->scale * ch->scale;
         }
+        if (terms > 0u && ao * ch->scale * ch->scale > ch->avar_most) {
+            ch->avar_most = ao * ch->scale * ch->scale;
+        }
     }
 }
 
@@ -1319,6 +1334,7 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
     size_t i;
     hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
     ch->avar_least = INFINITY;
+    ch->avar_most = 0.0;
     if (R->exact) {
         exact_table(R, ch);
     } else {
@@ -1382,22 +1398,22 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
         ch->underflow = 1;
         ch->constant = 0;
     }
-    if (R->exact && ch->varied && (isinf(ch->avar_least) || ch->avar_least < DBL_MIN) &&
-        ch->spread < sqrt(DBL_MIN / DBL_EPSILON)) {
+    if (R->exact && ch->varied &&
+        (isinf(ch->avar_least) ? ch->spread < sqrt(DBL_MIN / DBL_EPSILON) : ch->avar_most < DBL_MIN)) {
         /* the record is in double, but a series that varies by 1e-200
          * squares to 0 there: every variance 0, which read as a constant
-         * channel ("stuck channel", exit 0); a spread whose square is
-         * subnormal or less keeps fewer digits than a double's. (Not a
-         * variance 0 of values that vary widely: --m at their period.) */
+         * channel ("stuck channel", exit 0); so is one whose every variance
+         * is subnormal (fewer digits than a double's). Not a few subnormal
+         * ones at long tau beside normal ones (accurate where normal), nor a
+         * variance 0 of values that vary widely (--m at their period) */
         ch->underflow = 2;
         ch->constant = 0;
     }
     if (ch->underflow == 2) {
-        hx_error(CMD, "%s: %s: the values vary by at most %.3g %s, whose squares (the Allan variance, %.3g %s^2) are "
-                      "below a double's range (%.3g): its digits are lost; scale the values up (a power of ten, "
-                      "with --unit)",
-                 R->source, ch->name, ch->spread * ch->scale, ch->unit,
-                 isinf(ch->avar_least) ? 0.0 : ch->avar_least, ch->unit, DBL_MIN);
+        hx_error(CMD, "%s: %s: the values vary by at most %.3g %s, and every Allan variance (at most %.3g %s^2) is "
+                      "below a double's normal range (%.3g): its digits are lost; scale the values up (a power of "
+                      "ten, with --unit)",
+                 R->source, ch->name, ch->spread * ch->scale, ch->unit, ch->avar_most, ch->unit, DBL_MIN);
     } else if (ch->underflow) {
         hx_error(CMD, "%s: %s: an Allan variance of %.3g %s^2 is below the float build's range (%.3g): its "
                       "digits are lost; scale the values up (a power of ten, with --unit) or use the double build "
@@ -2929,10 +2945,16 @@ int hx_cmd_allan(int argc, char **argv)
             }
             R->dev_pr = NULL;
         }
-        if (hx_stop_sig) {
-            snprintf(R->interrupted, sizeof R->interrupted,
-                     "interrupted by %s in the deviation tables: those from there on not computed, the "
-                     "simulation check not run",
+        if (hx_stop_sig && R->ndev > 0) {
+            /* said of the stages the run has (no deviation tables or no
+             * simulation check named that was not asked for) */
+            snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s in the deviation tables: those from "
+                                                            "there on not computed%s",
+                     hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT",
+                     hx_flag(&a, "--no-sim") ? "" : ", the simulation check not run");
+        } else if (hx_stop_sig && !hx_flag(&a, "--no-sim")) {
+            snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s before the simulation check: not run "
+                                                            "(the tables and the identification are complete)",
                      hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
         }
     }
@@ -2991,9 +3013,15 @@ int hx_cmd_allan(int argc, char **argv)
         }
     }
 
-    if (hx_stop_sig) {
+    /* nothing left to stop: a signal from here on ends the command (it gave
+     * exit 143 with a JSON saying complete) */
+    hx_stop_off();
+    if (R->interrupted[0] != '\0') {
         hx_warn(CMD, "%s; what is done is printed and written (JSON complete false)", R->interrupted);
         exit_code = 128 + (int)hx_stop_sig; /* as the shell reports a command a signal ended */
+    } else if (hx_stop_sig) {
+        hx_warn(CMD, "%s came after the slow stages: the results are complete",
+                hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
     }
     if (!hx_flag(&a, "--quiet")) {
         printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
@@ -3034,7 +3062,7 @@ int hx_cmd_allan(int argc, char **argv)
             exit_code = worse_exit(exit_code, rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO);
         }
     }
-    if (hx_stop_sig && exit_code != HX_EXIT_IO) {
+    if (R->interrupted[0] != '\0' && exit_code != HX_EXIT_IO) {
         exit_code = 128 + (int)hx_stop_sig; /* not a data error found after it (the profile's refusal) */
     }
     free_run(R);

@@ -592,15 +592,16 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
         }
     }
     fprintf(p.gp, "EOD\n");
+    fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6): %s'\n", k_ch[c], (unsigned)nfft,
+            src);
+    /* the averaging on the time axis, not in the title (which a long log's
+     * source name then clipped) */
     if (group > 1u) {
-        fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6; %lu segments averaged per "
-                      "column): %s'\n",
-                k_ch[c], (unsigned)nfft, (unsigned long)group, src);
+        fprintf(p.gp, "set xlabel 'time [s] (%lu segments averaged in power per column)'\n", (unsigned long)group);
     } else {
-        fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6): %s'\n", k_ch[c], (unsigned)nfft,
-                src);
+        fprintf(p.gp, "set xlabel 'time [s]'\n");
     }
-    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]' offset 2.5,0\n",
+    fprintf(p.gp, "set ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]' offset 2.5,0\n",
             c < 3 ? "(m/s^2)" : "(rad/s)");
     /* stats first: with one column it reads the values as y and drops those
      * outside the y range, which is the frequency axis [0, f_s/2] (every dB

@@ -753,13 +753,24 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
 volatile sig_atomic_t hx_stop_sig = 0;
 static char g_stop_msg[200];
 static size_t g_stop_len;
+static struct sigaction g_stop_dfl; /* SIG_DFL, set up before the handler can run */
 
 static void stop_handler(int sig)
 {
     ssize_t w;
     hx_stop_sig = sig;
+    /* a second signal of either kind ends the command at once (SA_RESETHAND
+     * reset only the one delivered: SIGINT then SIGTERM went on) */
+    (void)sigaction(SIGINT, &g_stop_dfl, NULL);
+    (void)sigaction(SIGTERM, &g_stop_dfl, NULL);
     w = write(STDERR_FILENO, g_stop_msg, g_stop_len); /* async-signal-safe; nothing to do if stderr is gone */
     (void)w;
+}
+
+void hx_stop_off(void)
+{
+    (void)sigaction(SIGINT, &g_stop_dfl, NULL);
+    (void)sigaction(SIGTERM, &g_stop_dfl, NULL);
 }
 
 void hx_stop_on_signals(const char *cmd, const char *how)
@@ -768,10 +779,14 @@ void hx_stop_on_signals(const char *cmd, const char *how)
     const int n = snprintf(g_stop_msg, sizeof g_stop_msg, "\n%s: stopping %s (a second signal quits at once)\n", cmd,
                            how);
     g_stop_len = n < 0 ? 0u : (size_t)n < sizeof g_stop_msg ? (size_t)n : sizeof g_stop_msg - 1u;
+    memset(&g_stop_dfl, 0, sizeof g_stop_dfl);
+    g_stop_dfl.sa_handler = SIG_DFL;
+    sigemptyset(&g_stop_dfl.sa_mask);
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = stop_handler;
-    sa.sa_flags = (int)SA_RESETHAND;
     sigemptyset(&sa.sa_mask);
+    (void)sigaddset(&sa.sa_mask, SIGINT);
+    (void)sigaddset(&sa.sa_mask, SIGTERM);
     (void)sigaction(SIGINT, &sa, NULL);
     (void)sigaction(SIGTERM, &sa, NULL);
 }

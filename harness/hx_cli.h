@@ -270,11 +270,16 @@ int hx_check_outputs(const char *cmd, const hx_args_t *a, const char *const *fil
 extern volatile sig_atomic_t hx_stop_sig;
 /** Ctrl-C and SIGTERM stop the work at its next step instead of ending the
  *  process: the handler sets hx_stop_sig and says "CMD: stopping HOW (a
- *  second signal quits at once)" on standard error; it is
- *  reset by the first signal, so a second one ends the command at once.
- *  The command reports and writes what it did, marked incomplete, and exits
- *  128 + hx_stop_sig (docs/harness.md, "Stopping a command"). */
+ *  second signal quits at once)" on standard error; the first signal puts
+ *  both back to their default, so a second one, of either kind, ends the
+ *  command at once. The command reports and writes what it did, marked
+ *  incomplete, and exits 128 + hx_stop_sig (docs/harness.md, "Stopping a
+ *  command"). */
 void hx_stop_on_signals(const char *cmd, const char *how);
+/** Both signals back to their default (end the process) once nothing is
+ *  left to stop: a signal while the outputs are written is not taken for
+ *  one that stopped the work. */
+void hx_stop_off(void);
 
 /** Where `--json -` (and allan's and psd's `--out -`) writes: the
  *  process's standard output, kept aside by hx_json_stdout_claim (main.c)

@@ -323,5 +323,24 @@ else
     echo "SKIP montecarlo stopped by SIGTERM: it ended within 3 s"
 fi
 
+# a second signal of the other kind ends it at once: SIGTERM and SIGINT
+# went on (SA_RESETHAND reset only the one delivered) and wrote the runs
+"$H" montecarlo --seeds 50 --duration 600 --json "$T/stop2.json" >/dev/null 2>&1 &
+mc_pid=$!
+sleep 3
+if kill -TERM "$mc_pid" 2>/dev/null; then
+    # at once (a run lasts about a second: the first signal's stop could
+    # end it before a later one); whichever is delivered first stops, the
+    # other ends the command (exit 130 or 143), nothing written
+    kill -INT "$mc_pid" 2>/dev/null
+    wait "$mc_pid"; mc_rc=$?
+    { [ "$mc_rc" -eq 130 ] || [ "$mc_rc" -eq 143 ]; } && [ ! -e "$T/stop2.json" ] &&
+        pass "SIGTERM and SIGINT: ended at once by the second (exit $mc_rc, nothing written)" ||
+        fail "SIGTERM and SIGINT: exit $mc_rc, JSON $( [ -e "$T/stop2.json" ] && echo written || echo absent)"
+else
+    wait "$mc_pid"
+    echo "SKIP montecarlo stopped by two signals: it ended within 3 s"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
