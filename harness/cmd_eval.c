@@ -1750,14 +1750,42 @@ static void figure(ev_t *ev, const char *name, int strides, const char *title, c
  * tracked docs/results.md (fopen "w" before the runs). A signal removes
  * the part written (the handler: unlink, then the signal's own action) */
 static char g_md_part[PATH_MAX + 8];
+static const int k_md_sigs[3] = { SIGINT, SIGTERM, SIGHUP };
+static struct sigaction g_md_old[3]; /* their actions before (ignored under nohup: left so) */
 
 static void md_part_signal(int sig)
 {
+    int k;
     if (g_md_part[0] != '\0') {
         (void)unlink(g_md_part);
     }
-    (void)signal(sig, SIG_DFL);
+    for (k = 0; k < 3; k++) {
+        if (k_md_sigs[k] == sig) {
+            (void)sigaction(sig, &g_md_old[k], NULL);
+        }
+    }
     (void)raise(sig);
+}
+
+/* the handler on (on) or the actions before back (off) */
+static void md_signals(int on)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        if (on) {
+            struct sigaction sa;
+            (void)sigaction(k_md_sigs[k], NULL, &g_md_old[k]);
+            if (g_md_old[k].sa_handler == SIG_IGN) {
+                continue;
+            }
+            memset(&sa, 0, sizeof sa);
+            sa.sa_handler = md_part_signal;
+            sigemptyset(&sa.sa_mask);
+            (void)sigaction(k_md_sigs[k], &sa, NULL);
+        } else {
+            (void)sigaction(k_md_sigs[k], &g_md_old[k], NULL);
+        }
+    }
 }
 
 /* the file to write the report into (OUT itself when it is no regular file
@@ -1765,10 +1793,14 @@ static void md_part_signal(int sig)
  * of the one renamed onto at the end (a symlink's target) */
 static FILE *md_open(const char *out_path, char *path, size_t path_size)
 {
-    struct stat st;
+    struct stat st, lst;
     FILE *f;
     const int exists = stat(out_path, &st) == 0;
-    if ((exists && !S_ISREG(st.st_mode)) || strlen(out_path) >= path_size) {
+    if ((exists && !S_ISREG(st.st_mode)) || strlen(out_path) >= path_size ||
+        (!exists && lstat(out_path, &lst) == 0 && S_ISLNK(lst.st_mode))) {
+        /* written in place: no regular file (/dev/null), or a symlink to
+         * none, whose target the write creates (a part renamed onto it
+         * replaced the link by a file) */
         return fopen(out_path, "w");
     }
     if (exists && realpath(out_path, path) != NULL && strlen(path) + 5 < sizeof g_md_part) {
@@ -1777,14 +1809,17 @@ static FILE *md_open(const char *out_path, char *path, size_t path_size)
         snprintf(path, path_size, "%s", out_path);
     }
     snprintf(g_md_part, sizeof g_md_part, "%s.part", path);
+    md_signals(1);
     f = fopen(g_md_part, "w");
     if (f == NULL) {
+        md_signals(0);
         g_md_part[0] = '\0';
         return NULL;
     }
-    (void)signal(SIGINT, md_part_signal);
-    (void)signal(SIGTERM, md_part_signal);
-    (void)signal(SIGHUP, md_part_signal);
+    if (exists) {
+        /* the report keeps the file's mode (a 0600 one came back 0644) */
+        (void)fchmod(fileno(f), st.st_mode & 07777);
+    }
     return f;
 }
 
@@ -1795,9 +1830,6 @@ static int md_finish(const char *path, int ok)
     if (g_md_part[0] == '\0') {
         return 0;
     }
-    (void)signal(SIGINT, SIG_DFL);
-    (void)signal(SIGTERM, SIG_DFL);
-    (void)signal(SIGHUP, SIG_DFL);
     if (ok && rename(g_md_part, path) != 0) {
         e = errno;
     }
@@ -1805,6 +1837,7 @@ static int md_finish(const char *path, int ok)
         (void)unlink(g_md_part);
     }
     g_md_part[0] = '\0';
+    md_signals(0); /* after the rename: a signal before it removes the part */
     return e;
 }
 

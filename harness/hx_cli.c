@@ -753,24 +753,27 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
 volatile sig_atomic_t hx_stop_sig = 0;
 static char g_stop_msg[200];
 static size_t g_stop_len;
-static struct sigaction g_stop_dfl; /* SIG_DFL, set up before the handler can run */
+/* the two signals' actions before hx_stop_on_signals (the default, or
+ * ignored: nohup, a script's background job), set up before the handler
+ * can run */
+static struct sigaction g_stop_old_int, g_stop_old_term;
 
 static void stop_handler(int sig)
 {
     ssize_t w;
     hx_stop_sig = sig;
     /* a second signal of either kind ends the command at once (SA_RESETHAND
-     * reset only the one delivered: SIGINT then SIGTERM went on) */
-    (void)sigaction(SIGINT, &g_stop_dfl, NULL);
-    (void)sigaction(SIGTERM, &g_stop_dfl, NULL);
+     * reset only the one delivered: SIGTERM then SIGINT went on) */
+    (void)sigaction(SIGINT, &g_stop_old_int, NULL);
+    (void)sigaction(SIGTERM, &g_stop_old_term, NULL);
     w = write(STDERR_FILENO, g_stop_msg, g_stop_len); /* async-signal-safe; nothing to do if stderr is gone */
     (void)w;
 }
 
 void hx_stop_off(void)
 {
-    (void)sigaction(SIGINT, &g_stop_dfl, NULL);
-    (void)sigaction(SIGTERM, &g_stop_dfl, NULL);
+    (void)sigaction(SIGINT, &g_stop_old_int, NULL);
+    (void)sigaction(SIGTERM, &g_stop_old_term, NULL);
 }
 
 void hx_stop_on_signals(const char *cmd, const char *how)
@@ -779,16 +782,21 @@ void hx_stop_on_signals(const char *cmd, const char *how)
     const int n = snprintf(g_stop_msg, sizeof g_stop_msg, "\n%s: stopping %s (a second signal quits at once)\n", cmd,
                            how);
     g_stop_len = n < 0 ? 0u : (size_t)n < sizeof g_stop_msg ? (size_t)n : sizeof g_stop_msg - 1u;
-    memset(&g_stop_dfl, 0, sizeof g_stop_dfl);
-    g_stop_dfl.sa_handler = SIG_DFL;
-    sigemptyset(&g_stop_dfl.sa_mask);
+    (void)sigaction(SIGINT, NULL, &g_stop_old_int);
+    (void)sigaction(SIGTERM, NULL, &g_stop_old_term);
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = stop_handler;
     sigemptyset(&sa.sa_mask);
     (void)sigaddset(&sa.sa_mask, SIGINT);
     (void)sigaddset(&sa.sa_mask, SIGTERM);
-    (void)sigaction(SIGINT, &sa, NULL);
-    (void)sigaction(SIGTERM, &sa, NULL);
+    /* a signal ignored when the command started stays ignored (it was
+     * caught: `nohup`'s and a script's background job's) */
+    if (g_stop_old_int.sa_handler != SIG_IGN) {
+        (void)sigaction(SIGINT, &sa, NULL);
+    }
+    if (g_stop_old_term.sa_handler != SIG_IGN) {
+        (void)sigaction(SIGTERM, &sa, NULL);
+    }
 }
 
 FILE *hx_json_stdout = NULL;
@@ -1111,7 +1119,12 @@ static int writable_errno(const char *path)
     strcpy(cur, path);
     for (hops = 0;; hops++) {
         if (stat(cur, &st) == 0) {
-            /* there: opened as the write opens it, without creating */
+            /* there: opened as the write opens it, without creating; a FIFO
+             * only asked (an open and close hands its reader an end of file,
+             * and the real write then waits for ever) */
+            if (S_ISFIFO(st.st_mode)) {
+                return access(cur, W_OK) == 0 ? 0 : errno;
+            }
             if ((fd = open(cur, O_WRONLY | O_APPEND)) < 0) {
                 return errno;
             }

@@ -3382,13 +3382,29 @@ hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n
 enum { SPOOL_MAX = 4 };
 static struct {
     char path[4096];
-    int fd;
+    int fd;            /* -1: the copy failed (err), said again at every open */
+    char err[HX_ERR_SIZE];
 } g_spool[SPOOL_MAX];
 static int g_spool_n = 0;
 
 /* the bytes of the pipe at path into an unlinked temporary file: its fd, or
- * -1 with err filled */
+ * -1 with err filled (kept for the path: a later open would read the rest
+ * of the pipe as the log) */
+static int spool_pipe_once(const char *path, char *err, size_t err_size);
+
 static int spool_pipe(const char *path, char *err, size_t err_size)
+{
+    const int fd = spool_pipe_once(path, err, err_size);
+    if (fd < 0 && g_spool_n < SPOOL_MAX && strlen(path) < sizeof g_spool[0].path) {
+        copy_str(g_spool[g_spool_n].path, sizeof g_spool[0].path, path);
+        g_spool[g_spool_n].fd = -1;
+        copy_str(g_spool[g_spool_n].err, sizeof g_spool[0].err, err);
+        g_spool_n++;
+    }
+    return fd;
+}
+
+static int spool_pipe_once(const char *path, char *err, size_t err_size)
 {
     static char buf[1 << 16];
     FILE *tmp;
@@ -3456,6 +3472,10 @@ gzFile hx_gzopen_input(const char *path, char *err, size_t err_size)
     int k, fd = -1;
     for (k = 0; k < g_spool_n; k++) {
         if (strcmp(g_spool[k].path, path) == 0) {
+            if (g_spool[k].fd < 0) {
+                snprintf(err, err_size, "%s", g_spool[k].err);
+                return NULL;
+            }
             fd = g_spool[k].fd;
         }
     }
@@ -3466,7 +3486,7 @@ gzFile hx_gzopen_input(const char *path, char *err, size_t err_size)
                                     "port is read by `harness live`)", path);
             return NULL;
         }
-        if (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) {
+        if (S_ISFIFO(st.st_mode)) {
             fd = spool_pipe(path, err, err_size);
             if (fd < 0) {
                 return NULL;
@@ -3509,6 +3529,9 @@ static FILE *fopen_input(const char *path)
     for (k = 0; k < g_spool_n; k++) {
         if (strcmp(g_spool[k].path, path) == 0) {
             char self[64];
+            if (g_spool[k].fd < 0) {
+                return NULL;
+            }
             snprintf(self, sizeof self, "/proc/self/fd/%d", g_spool[k].fd);
             return fopen(self, "rb");
         }

@@ -196,8 +196,8 @@ const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf);
 void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
                        int detected);
 /** Open a log for reading with zlib, as gzopen(path, "rb") but for a pipe:
- *  a FIFO or a socket (`harness replay <(ssh host cat log)`, /dev/stdin
- *  from a pipe) is copied once into an unlinked temporary file, which
+ *  a FIFO (`harness replay <(ssh host cat log)`, /dev/stdin from a pipe)
+ *  is copied once into an unlinked temporary file, which
  *  every later open of the same path reads again (the readers read a log
  *  more than once: detection, the rate's estimate, the loader's count). A
  *  character device but /dev/null (a terminal, a serial port) is refused:

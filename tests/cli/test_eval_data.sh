@@ -46,6 +46,25 @@ else
     wait "$ev_pid"
     echo "SKIP eval stopped by SIGTERM: it ended within 2 s"
 fi
+# a signal ignored when eval starts stays ignored (`nohup eval`: its
+# report's handler caught SIGHUP and the run died, exit 129)
+sh -c 'trap "" HUP; exec "$@"' sh "$H" eval --no-experiments --data "$T/many" --out "$T/nohup.md" >/dev/null 2>&1 &
+ev_pid=$!
+sleep 0.5
+kill -HUP "$ev_pid" 2>/dev/null
+wait "$ev_pid"; ev_rc=$?
+[ "$ev_rc" -eq 1 ] && [ -s "$T/nohup.md" ] && pass "eval with SIGHUP ignored: a SIGHUP does not end it (exit 1, the report written)" ||
+    fail "eval with SIGHUP ignored: exit $ev_rc"
+# --out a symlink to no file: the report is written through it, the link
+# kept (the part renamed onto it replaced the link); and a report keeps its
+# file's mode (a 0600 one came back 0644)
+ln -s "$T/evtarget.md" "$T/evlink.md"
+expect_exit 1 "eval --out a symlink to no file" "$H" eval --no-experiments --data "$T/many" --out "$T/evlink.md"
+[ -L "$T/evlink.md" ] && [ -s "$T/evtarget.md" ] && pass "... the link kept, its target written" ||
+    fail "... $(ls -l "$T/evlink.md" "$T/evtarget.md" 2>&1)"
+cp "$T/many.md" "$T/priv.md"; chmod 600 "$T/priv.md"
+expect_exit 1 "eval --out a 0600 report" "$H" eval --no-experiments --data "$T/many" --out "$T/priv.md"
+[ "$(stat -c %a "$T/priv.md")" = 600 ] && pass "... its mode kept" || fail "... mode $(stat -c %a "$T/priv.md")"
 
 # --- a walk read to its end on which the filter never aligned (it moves
 # throughout) is a failed run for that reason: its row must not say "input

@@ -991,10 +991,20 @@ fifo_feed "$T/fifo2" "$T/pgyr.csv"
 expect_exit 0 "merge of two pipes" timeout 60 "$H" merge "$T/fifo" "$T/fifo2" "$T/pm_fifo.csv" --units time=s,accel=m/s2,gyro=rad/s
 fifo_done; feed_pid=$p1; fifo_done
 if cmp -s "$T/pm_file.csv" "$T/pm_fifo.csv"; then pass "... the same log"; else fail "... the merged logs differ"; fi
-expect_exit 1 "a character device as the log" "$H" info /dev/zero
+expect_exit 1 "a character device as the log" timeout 60 "$H" info /dev/zero
 expect_err "/dev/zero: a character device (a terminal, a serial port), not a log file" "... named"
 expect_exit 1 "/dev/null as the log" "$H" info /dev/null
 expect_err "/dev/null: empty file" "... is an empty file"
+
+# --json onto a FIFO with a reader: the output pre-check opened and closed
+# it, which handed the reader an end of file, and the JSON's write then
+# waited for ever (exit 124 under timeout)
+rm -f "$T/jfifo"; mkfifo "$T/jfifo"
+timeout 60 cat "$T/jfifo" > "$T/jfifo.json" &
+jf_pid=$!
+expect_exit 0 "replay --json onto a FIFO" timeout 60 "$H" replay vectors/walk.bin --quiet --json "$T/jfifo"
+wait "$jf_pid" # the reader ends at the writer's close
+json "$T/jfifo.json" 'j["health"]["samples"] == 16539' && pass "... the JSON read from it" || fail "... no JSON through the FIFO"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
