@@ -34,6 +34,9 @@ struct.pack_into("<d", b, 16, float(sys.argv[3]))
 struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
 open(sys.argv[2], "wb").write(b)' "$@"
 }
+sigint_default() { # command... &: run it in the background with SIGINT at its default (a script's background job starts with it ignored, which the harness leaves so); it execs, so that $! is the command's pid: never in the foreground
+    exec "${PY:-/usr/bin/python3}" -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' "$@"
+}
 fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and writes the output file
     # (a PNG's signature and its IEND chunk: the smallest picture the harness takes for a whole one)
     mkdir -p "$1"

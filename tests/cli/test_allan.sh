@@ -1315,10 +1315,7 @@ wait_line() {
 }
 "$PY" -c 'import random; random.seed(8); print("\n".join("%.9g" % random.gauss(0, 1) for _ in range(100000)))' \
     >"$T/w100k.txt"
-# (SIGINT set back to its default first: a script's background job starts with it ignored, which the command
-# leaves so, as `nohup` leaves SIGHUP)
-"$PY" -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
-    "$H" allan --series "$T/w100k.txt" --rate 1 --deviation all --no-sim --out "$T/int.csv" --json "$T/int.json" \
+sigint_default "$H" allan --series "$T/w100k.txt" --rate 1 --deviation all --no-sim --out "$T/int.csv" --json "$T/int.json" \
     >"$T/int.out" 2>"$T/int.err" &
 p=$!
 wait_line "$T/int.err" "allan: deviations:"

@@ -325,10 +325,7 @@ fi
 
 # a second signal of the other kind ends it at once: SIGTERM and SIGINT
 # went on (SA_RESETHAND reset only the one delivered) and wrote the runs
-# (SIGINT set back to its default first: a script's background job starts
-# with it ignored, which the command leaves so)
-/usr/bin/python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
-    "$H" montecarlo --seeds 50 --duration 600 --json "$T/stop2.json" >/dev/null 2>&1 &
+sigint_default "$H" montecarlo --seeds 50 --duration 600 --json "$T/stop2.json" >/dev/null 2>&1 &
 mc_pid=$!
 sleep 3
 if kill -TERM "$mc_pid" 2>/dev/null; then

@@ -190,7 +190,7 @@ expect_err "samples per static case; at most 20000000" "the static case's size i
 
 # Ctrl-C stops the run before its next case and reports and writes the
 # cases run (not lost: a full run takes 13 minutes); exit 130
-"$H" simgap-validate --cases 40 $FAST --json "$T/i.json" --markdown "$T/i.md" >"$T/out" 2>"$T/err" &
+sigint_default "$H" simgap-validate --cases 40 $FAST --json "$T/i.json" --markdown "$T/i.md" >"$T/out" 2>"$T/err" &
 pid=$!
 k=0
 while ! grep -q "^case" "$T/out" 2>/dev/null && [ $k -lt 600 ]; do sleep 0.1; k=$((k + 1)); done
