@@ -804,22 +804,11 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         /* the gaps said with what they lost: the series is read as if its
          * samples were consecutive (a 60 s hole in an hour was only "3
          * intervals differ"); a stamp written twice said as such */
-        char rep[96] = "", gap[192] = "";
-        if (repeats > 0) {
-            snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
-                     repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
-        }
-        if (gaps > 0) {
-            snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
-                                      "of the log)",
-                     gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
-                     100.0 * missing / ((double)R->n + missing > 0.0 ? (double)R->n + missing : 1.0));
-        }
-        hx_warn(CMD, "%s: %ld interval%s from 1/rate by more than 10 %%%s%s: the Allan variance assumes uniform "
+        char what[300];
+        hx_irregular_text(what, sizeof what, repeats, gaps, longest_gap_s, missing, (double)R->n);
+        hx_warn(CMD, "%s: %ld interval%s from 1/rate by more than 10 %%%s: the Allan variance assumes uniform "
                      "sampling%s",
-                path, irregular, irregular == 1 ? " differs" : "s differ", rep, gap,
-                gaps > 1 ? ", and the samples are joined across the gaps as if consecutive"
-                : gaps == 1 ? ", and the samples are joined across the gap as if consecutive" : "");
+                path, irregular, irregular == 1 ? " differs" : "s differ", what, hx_gaps_joined(gaps));
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
         /* not with --rate, which sets the rate the analysis takes; the

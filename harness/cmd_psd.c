@@ -898,22 +898,11 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         if (irregular > 0) {
-            char rep[96] = "", gap[192] = "";
-            if (repeats > 0) {
-                snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
-                         repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
-            }
-            if (gaps > 0) {
-                snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g "
-                                          "%% of the log)",
-                         gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
-                         100.0 * missing / ((double)log.n + missing));
-            }
-            hx_warn(CMD, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s%s: Welch assumes uniform "
+            char what[300];
+            hx_irregular_text(what, sizeof what, repeats, gaps, longest_gap_s, missing, (double)log.n);
+            hx_warn(CMD, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s: Welch assumes uniform "
                          "sampling%s",
-                    irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, rep, gap,
-                    gaps > 1 ? ", and the samples are joined across the gaps as if consecutive"
-                : gaps == 1 ? ", and the samples are joined across the gap as if consecutive" : "");
+                    irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, what, hx_gaps_joined(gaps));
         }
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,

@@ -5252,3 +5252,26 @@ hx_format_t hx_detect_file(const char *path)
     gzclose(gz);
     return got > 0 ? detect(head, (size_t)got) : HX_FMT_AUTO;
 }
+
+void hx_irregular_text(char *buf, size_t size, long repeats, long gaps, double longest_gap_s, double missing,
+                       double n)
+{
+    char rep[96] = "", gap[192] = "";
+    if (repeats > 0) {
+        snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
+                 repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
+    }
+    if (gaps > 0) {
+        snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
+                                  "of the log)",
+                 gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
+                 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+    }
+    snprintf(buf, size, "%s%s", rep, gap);
+}
+
+const char *hx_gaps_joined(long gaps)
+{
+    return gaps > 1 ? ", and the samples are joined across the gaps as if consecutive"
+           : gaps == 1 ? ", and the samples are joined across the gap as if consecutive" : "";
+}

@@ -314,6 +314,15 @@ int hx_ends_in(const char *s, size_t end, const char *suffix);
  *  from a sample counter): lost samples left out. 0 when no two stamps
  *  increase. *coarse (may be NULL) is set to 1 when the stamps were coarse. */
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
+/** What the irregular intervals of a log were, for allan's and psd's
+ *  warning: ", N of them time stamps repeated, M of them gaps (longest L
+ *  s; about K samples missing in all, P % of the log)" (either part left
+ *  out when 0) into buf; n the samples read. */
+void hx_irregular_text(char *buf, size_t size, long repeats, long gaps, double longest_gap_s, double missing,
+                       double n);
+/** ", and the samples are joined across the gap(s) as if consecutive"
+ *  for gaps > 0, else "". */
+const char *hx_gaps_joined(long gaps);
 
 /** Greatest common divisor of a >= 0 and b >= 0 (Euclid); gcd(a, 0) = a.
  *  Folded over the positive intervals of time stamps it gives their
