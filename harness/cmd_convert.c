@@ -144,7 +144,8 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
         }
     }
     hx_log_free(&res);
-    if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+    /* an input read up to an error: a .bin without END, as convert's below */
+    if ((lrc > 0 ? hx_writer_close_cut(w, err, sizeof err) : hx_writer_close(w, err, sizeof err)) != FNAV_OK) {
         hx_error("convert", "%s", err);
         exit_code = HX_EXIT_IO;
     }
@@ -252,7 +253,10 @@ int hx_cmd_convert(int argc, char **argv)
         }
         exit_code = HX_EXIT_DATA;
     }
-    if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+    /* a .bin of an input read up to an error gets no END record: every
+     * later reader says it is incomplete (with END it read as whole) */
+    if ((exit_code == HX_EXIT_DATA ? hx_writer_close_cut(w, err, sizeof err) : hx_writer_close(w, err, sizeof err)) !=
+        FNAV_OK) {
         hx_error("convert", "%s", err);
         exit_code = HX_EXIT_IO;
     }

@@ -221,7 +221,9 @@ int hx_cmd_merge(int argc, char **argv)
         written++;
     }
     hx_progress_end(&pr);
-    if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+    /* a file read up to an error: a .bin without END (convert's rule) */
+    if ((part[0] > 0 || part[1] > 0 ? hx_writer_close_cut(w, err, sizeof err) : hx_writer_close(w, err, sizeof err)) !=
+        FNAV_OK) {
         hx_error("merge", "%s", err);
         exit_code = HX_EXIT_IO;
     }

@@ -3086,7 +3086,8 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 return FNAV_E_TRUNCATED;
             }
             if (!r->stats.clean_end) {
-                set_err(r, "%s: truncated: no end record after %ld records (recording was not closed)",
+                set_err(r, "%s: truncated: no end record after %ld records (its writer did not finish it: killed, or stopped "
+                        "at an error in its input)",
                         r->path, r->stats.records);
                 return FNAV_E_TRUNCATED;
             }
@@ -4781,13 +4782,15 @@ fnav_status_t hx_writer_rewrite_header(hx_writer_t *w, const hx_meta_t *meta)
     return FNAV_OK;
 }
 
-fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size)
+/* end_record 0: a .bin is left without its END record, as a killed
+ * writer leaves it, so that every later reader says it is incomplete */
+static fnav_status_t writer_finish(hx_writer_t *w, int end_record, char *err, size_t err_size)
 {
     fnav_status_t st = FNAV_OK;
     if (w == NULL) {
         return FNAV_E_ARG;
     }
-    if (w->fmt == HX_FMT_BIN) {
+    if (w->fmt == HX_FMT_BIN && end_record) {
         unsigned char rb[HX_BIN_RECORD_SIZE];
         hx_bin_record_t rec;
         memset(&rec, 0, sizeof rec);
@@ -4811,6 +4814,16 @@ fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size)
     }
     free(w);
     return st;
+}
+
+fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size)
+{
+    return writer_finish(w, 1, err, err_size);
+}
+
+fnav_status_t hx_writer_close_cut(hx_writer_t *w, char *err, size_t err_size)
+{
+    return writer_finish(w, 0, err, err_size);
 }
 
 /* ------------------------------------------------------------ whole log */

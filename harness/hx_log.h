@@ -282,6 +282,9 @@ fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s);
 fnav_status_t hx_writer_rewrite_header(hx_writer_t *w, const hx_meta_t *meta);
 /** Finish the file (.bin: END record) and close it. */
 fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size);
+/** Close a file whose input stopped at an error: a .bin gets no END
+ *  record, so every reader says it is incomplete (a CSV closes as above). */
+fnav_status_t hx_writer_close_cut(hx_writer_t *w, char *err, size_t err_size);
 
 /* ------------------------------------------------------------------ */
 

@@ -240,7 +240,7 @@ static void test_bin_truncated(void **state)
     /* cut inside record #3: the three complete records before the cut survive */
     expect_bin(g_golden, HX_BIN_HEADER_SIZE + 3 * HX_BIN_RECORD_SIZE + 20, 1, 3, FNAV_E_TRUNCATED, "record #3");
     /* cut at a record boundary, before the end record: recording not closed */
-    expect_bin(g_golden, HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE, 1, 6, FNAV_E_TRUNCATED, "not closed");
+    expect_bin(g_golden, HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE, 1, 6, FNAV_E_TRUNCATED, "did not finish");
     /* header only, nothing else */
     expect_bin(g_golden, HX_BIN_HEADER_SIZE, 1, 0, FNAV_E_TRUNCATED, "truncated");
     /* empty file */

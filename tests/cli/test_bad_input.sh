@@ -120,6 +120,19 @@ expect_err "(the 100 samples of the window before it were written, of 200 read)"
 [ "$(wc -l <"$T/w1.csv")" -eq 101 ] && pass "convert: the 100 samples written" || fail "convert: $(wc -l <"$T/w1.csv") lines written, expected 101"
 expect_exit 1 "convert without a window of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w2.csv"
 expect_err "(the 200 samples before it were written)" "convert: without a window, the samples read are those written"
+# a .bin written from an input read up to an error had its END record, so
+# that every later reader took it as whole (info exit 0, complete): now it
+# is left without END, as a killed writer leaves it, with or without --rate
+for r in "" 50; do
+    expect_exit 1 "convert to .bin${r:+ --rate $r} of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/cut$r.bin" ${r:+--rate $r}
+    expect_exit 1 "info of that .bin${r:+ (--rate $r)}: incomplete" "$H" info "$T/cut$r.bin" --json "$T/cut$r.json"
+    expect_err "truncated: no end record after [0-9]* records (its writer did not finish it: killed, or stopped at an error in its input)" \
+        "info: the cut .bin${r:+ (--rate $r)} said to be incomplete"
+    json "$T/cut$r.json" 'j["complete"] is False and j["samples"] > 0' && pass "info: complete false${r:+ (--rate $r)}" \
+        || fail "info: the cut .bin${r:+ (--rate $r)} read as complete"
+done
+expect_exit 0 "convert to .bin of a whole log" "$H" convert "$T/nan200.csv" "$T/whole.bin" --end 1.5
+expect_exit 0 "info of the window's .bin: complete (END written)" "$H" info "$T/whole.bin"
 
 # --- a header that names a column it reads twice: the first was read
 # without a word ("t,ax,ay,az,gx,gy,gz,ax": the values of the second ax,

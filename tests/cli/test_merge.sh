@@ -332,6 +332,10 @@ expect_err "gyr_bad.csv:5001: column 2 ('Gyroscope x (rad/s)') is not a number: 
 n=$(($(wc -l < "$T/o.csv") - 1))
 if [ "$n" -gt 4900 ] && [ "$n" -le 4999 ]; then pass "the samples before the bad row written ($n)"
 else fail "samples written before the bad row: $n"; fi
+# into a .bin: no END record (it read as whole), as convert's
+expect_exit 1 "a bad row, merged into a .bin" "$H" merge "$T/phyphox_acc.csv" "$T/gyr_bad.csv" "$T/o.bin"
+expect_exit 1 "info of that .bin: incomplete" "$H" info "$T/o.bin"
+expect_err "truncated: no end record after" "the merged .bin said to be incomplete"
 
 # the text checks the log reader makes (hx_log.c), made by merge's reader
 # too: a NUL block, a stray delimiter, a cut last line, one sample, a
