@@ -29,6 +29,7 @@ typedef struct {
     long kept;
     int64_t before_ns; /* the latest sample before the window, after the first (its span when none is past it) */
     int64_t after_ns;  /* the first sample past the window's end (-1: none seen) */
+    int64_t span_ns;   /* --rate: the input's span (the resampled grid stops short of it); -1 otherwise */
 } window_t;
 
 static int in_window(window_t *wd, int64_t t_ns)
@@ -77,7 +78,7 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
                      a->pos[0], start, to, (double)wd->before_ns * 1e-9, (double)wd->after_ns * 1e-9);
         } else {
             hx_error("convert", "%s: no sample from %s s to %s: the log spans 0-%.6g s after its first sample",
-                     a->pos[0], start, to, (double)wd->before_ns * 1e-9);
+                     a->pos[0], start, to, (double)(wd->span_ns >= 0 ? wd->span_ns : wd->before_ns) * 1e-9);
         }
     }
     return 1;
@@ -88,8 +89,8 @@ static const hx_spec_t k_spec = {
     "Convert a log between the footnav .bin format, the CSV interchange format\n"
     "(t,ax,ay,az,gx,gy,gz[,temp] in s, m/s^2, rad/s, degC) and every importable\n"
     "format; OUT '-' writes CSV to standard output. On bad input, every sample\n"
-    "before the error is written, the output is closed validly and the exit\n"
-    "status is 1.",
+    "before the error is written and the exit status is 1 (a .bin is left\n"
+    "without its END record: every reader says it is incomplete).",
     2, 2, k_opts
 };
 
@@ -124,6 +125,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     if (raw.n > 0) {
         wd->t0_ns = raw.t_ns[0]; /* the window counts from the input's first sample */
         wd->have_t0 = 1;
+        wd->span_ns = raw.t_ns[raw.n - 1] - raw.t_ns[0]; /* as without --rate: 41.618 s, not the grid's 41.61 */
     }
     hx_log_free(&raw);
     w = hx_writer_open(a->pos[1], to, &res.meta, 0, err, sizeof err);
@@ -189,6 +191,7 @@ int hx_cmd_convert(int argc, char **argv)
     wd.start_ns = (int64_t)llround(start_s * 1e9);
     wd.end_ns = hx_arg(&a, "--end") != NULL ? (int64_t)llround(end_s * 1e9) : -1;
     wd.after_ns = -1;
+    wd.span_ns = -1;
     /* --rate: the range of replay --rate (hx_nav_opts_from_args); far below
      * 1 Hz the resampler's filter half-length, 20 x input rate / rate, no
      * longer fits an int (--rate 1e-9 wrote one NaN row and exit 0) */

@@ -38,6 +38,9 @@ typedef struct {
     double peak[6];
     double g_vec[3], g_mag, still_t_s, gyro_rest[3];
     double still_spread; /* the stillest second's spread of f over its mean |f| (INFO_STILL_SPREAD) */
+    double still_sd_mps2; /* that spread in m/s^2 */
+    int no_axis;          /* |f| there under HX_NO_GRAVITY_MPS2: no gravity axis to name */
+    int no_gravity;       /* not still, |f| and its spread there both under HX_NO_GRAVITY_MPS2 */
     int still;           /* that second is still: its |f| is the rest value the units check reads */
     int g_axis;
     int units_bad;     /* not SI units (hx_units_problem) */
@@ -212,8 +215,15 @@ static void analyse(const hx_log_t *log, info_t *in)
                         var += d * d / (double)w;
                     }
                 }
-                in->still_spread = in->g_mag > 0.0 ? sqrt(var) / in->g_mag : HUGE_VAL;
+                in->still_sd_mps2 = sqrt(var);
+                in->still_spread = in->g_mag > 0.0 ? in->still_sd_mps2 / in->g_mag : HUGE_VAL;
                 in->still = in->still_spread < INFO_STILL_SPREAD;
+                /* an accelerometer that reads about 0 (gravity removed, or a
+                 * dead one writing zeros): no gravity axis to name (it said
+                 * "gravity along -x" and, at exactly 0, a spread of "inf %"
+                 * without the no-gravity line) */
+                in->no_axis = in->g_mag < HX_NO_GRAVITY_MPS2;
+                in->no_gravity = !in->still && in->no_axis && in->still_sd_mps2 < HX_NO_GRAVITY_MPS2;
             }
         }
     }
@@ -329,17 +339,21 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
         cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
     }
     add_num(j, "gravity_magnitude_mps2", in->g_mag, in);
-    if (in->empty) {
+    if (in->empty || in->no_axis) {
         cJSON_AddNullToObject(j, "gravity_axis");
         cJSON_AddNullToObject(j, "up_axis");
+    }
+    if (in->empty) {
         cJSON_AddNullToObject(j, "gyro_at_rest_rps");
     } else {
         /* the accelerometer reads the specific force, which points up at
          * rest: gravity lies along the other sign (frames.md) */
         char up[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
         char down[3] = { in->g_vec[in->g_axis] >= 0.0 ? '-' : '+', (char)('x' + in->g_axis), '\0' };
-        cJSON_AddStringToObject(j, "gravity_axis", down);
-        cJSON_AddStringToObject(j, "up_axis", up);
+        if (!in->no_axis) {
+            cJSON_AddStringToObject(j, "gravity_axis", down);
+            cJSON_AddStringToObject(j, "up_axis", up);
+        }
         cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
     }
     if (in->units_bad && !in->empty) {
@@ -557,25 +571,33 @@ int hx_cmd_info(int argc, char **argv)
            in.peak[1] / 9.80665, in.peak[2] / 9.80665, in.peak[3] * 57.29577951308232, in.peak[4] * 57.29577951308232,
            in.peak[5] * 57.29577951308232);
     /* f at rest is the specific force, -g: it points up, gravity down */
-    printf("at rest     gravity along %c%c (%c%c up), |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at t = "
-           "%.1f s\n",
-           in.g_vec[in.g_axis] >= 0.0 ? '-' : '+', 'x' + in.g_axis, in.g_vec[in.g_axis] >= 0.0 ? '+' : '-',
-           'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0], in.g_vec[1], in.g_vec[2], in.still_t_s);
+    if (in.no_axis) {
+        printf("at rest     no gravity axis: |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at t = %.1f s\n",
+               in.g_mag, in.g_mag / 9.80665, in.g_vec[0], in.g_vec[1], in.g_vec[2], in.still_t_s);
+    } else {
+        printf("at rest     gravity along %c%c (%c%c up), |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at "
+               "t = %.1f s\n",
+               in.g_vec[in.g_axis] >= 0.0 ? '-' : '+', 'x' + in.g_axis, in.g_vec[in.g_axis] >= 0.0 ? '+' : '-',
+               'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0], in.g_vec[1], in.g_vec[2], in.still_t_s);
+    }
     /* in deg/s as well, the unit of the peak line and of a data sheet's bias */
     printf("            gyro (%.5f, %.5f, %.5f) rad/s = (%.3f, %.3f, %.3f) deg/s\n", in.gyro_rest[0], in.gyro_rest[1],
            in.gyro_rest[2], in.gyro_rest[0] * 57.29577951308232, in.gyro_rest[1] * 57.29577951308232,
            in.gyro_rest[2] * 57.29577951308232);
-    if (!in.still) {
+    if (!in.still && !in.no_gravity) {
         printf("            not still: f spreads by %.0f %% of its mean |f| in that second (a rest: below %.0f %%)\n",
                100.0 * in.still_spread, 100.0 * INFO_STILL_SPREAD);
     }
-    if (!in.still && in.g_mag > 0.0 && in.g_mag < HX_NO_GRAVITY_MPS2 &&
-        in.g_mag * in.still_spread < HX_NO_GRAVITY_MPS2) {
+    if (in.no_gravity && in.g_mag == 0.0 && in.still_sd_mps2 == 0.0) {
+        /* every axis exactly 0 for a second: no sensor reads that */
+        printf("            no gravity: f is exactly 0 on every axis in the quietest second: an accelerometer "
+               "disabled, or not written by the logger? replay needs its reading, the specific force\n");
+    } else if (in.no_gravity) {
         /* the quietest second near 0 m/s^2 and quiet in m/s^2: no gravity,
          * not a rest that moved (replay names it too: hx_nav.c) */
         printf("            no gravity: |f| %.4f m/s^2 and its spread %.4f m/s^2 in the quietest second: a linear "
                "acceleration (gravity removed)? replay needs the accelerometer's own reading, the specific force\n",
-               in.g_mag, in.g_mag * in.still_spread);
+               in.g_mag, in.still_sd_mps2);
     }
     if (in.units_bad) {
         printf("units       NOT SI: %s%s\n", in.units,

@@ -134,6 +134,21 @@ done
 expect_exit 0 "convert to .bin of a whole log" "$H" convert "$T/nan200.csv" "$T/whole.bin" --end 1.5
 expect_exit 0 "info of the window's .bin: complete (END written)" "$H" info "$T/whole.bin"
 
+# --- an accelerometer that reads exactly 0 (disabled, or not written by the
+# logger): info said "gravity along -x" and "f spreads by inf %" with no
+# no-gravity line, and its JSON named the axis "-x"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++) printf "%.2f,0,0,0,0.01,0,0\n", i / 100 }' >"$T/zero.csv"
+expect_exit 0 "info of a log whose accelerometer reads 0" "$H" info "$T/zero.csv" --json "$T/zero.json"
+expect_out "^at rest     no gravity axis: |f| = 0.0000 m/s^2" "info: no gravity axis named when f is 0"
+expect_out "no gravity: f is exactly 0 on every axis in the quietest second" "info: the zero accelerometer named"
+if grep -q "inf %\|gravity along" "$T/out"; then fail "info: an axis or an infinite spread for f = 0"; else pass "info: no axis, no infinite spread"; fi
+json "$T/zero.json" 'j["gravity_axis"] is None and j["up_axis"] is None and j["gravity_magnitude_mps2"] == 0' \
+    && pass "info: the JSON names no gravity axis" || fail "info: the JSON names a gravity axis for f = 0"
+expect_exit 0 "info of vectors/walk.bin" "$H" info vectors/walk.bin --json "$T/walkinfo.json"
+expect_out "^at rest     gravity along -z (+z up)" "info: the walk's gravity axis still named"
+json "$T/walkinfo.json" 'j["gravity_axis"] == "-z" and j["up_axis"] == "+z"' && pass "info: the walk's JSON axes" \
+    || fail "info: the walk's JSON axes lost"
+
 # --- a header that names a column it reads twice: the first was read
 # without a word ("t,ax,ay,az,gx,gy,gz,ax": the values of the second ax,
 # perhaps the one meant, were ignored). A warning names both columns.

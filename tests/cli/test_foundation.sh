@@ -281,6 +281,9 @@ expect_exit 1 "a window past the end" "$H" convert vectors/walk.bin "$T/w.csv" -
 # said naturally, with the log's span (not "no sample between 100000 and
 # the end s after the first")
 expect_err "^harness convert: error: vectors/walk.bin: no sample from 100000 s to the end: the log spans 0-41.618 s after its first sample$" "the empty window is said, with the log's span"
+# with --rate, the input's span too (it said the resampled grid's 0-41.61 s)
+expect_exit 1 "a window past the end, with --rate" "$H" convert vectors/walk.bin "$T/w.csv" --start 100000 --rate 100
+expect_err "^harness convert: error: vectors/walk.bin: no sample from 100000 s to the end: the log spans 0-41.618 s after its first sample$" "--rate: the input's span said"
 expect_exit 1 "a window past the end, with --end" "$H" convert "$T/edge.csv" "$T/w.csv" --start 1 --end 2
 expect_err "edge.csv: no sample from 1 s to 2 s: the log spans 0-0.09 s after its first sample$" "an empty --start/--end window names the span"
 { echo "t,ax,ay,az,gx,gy,gz"; for t in 0.00 0.01 0.02 1.00 1.01; do echo "$t,0,0,9.8,0,0,0"; done; } >"$T/gap.csv"
