@@ -17,7 +17,6 @@
 #include <unistd.h>
 #include <zlib.h>
 
-#define HX_LINE_MAX 4096
 #define HX_MAX_COLS 64
 #define HX_BUF_SIZE 65536
 

@@ -365,6 +365,11 @@ typedef struct {
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** The text readers' line buffer, bytes (the log reader's and merge's): a
+ *  line of more than HX_LINE_MAX - 1 characters stops the read, "PATH:LINE:
+ *  line longer than 4095 characters" (docs/log-format.md, "CSV
+ *  interchange"). */
+#define HX_LINE_MAX 4096
 /** A line cut by a NUL byte (gzgets stops at none: the text after it is
  *  lost), as every text reader says it after "PATH:LINE: ". */
 #define HX_NUL_TEXT "a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)"

@@ -15,7 +15,6 @@
 #include "hx_cli.h"
 #include "hx_names.h"
 
-#define TRI_LINE_MAX 8192
 #define TRI_MAX_COLS 64
 
 static const char *const k_sensor[2] = { "accelerometer", "gyroscope" };
@@ -163,7 +162,7 @@ static int field_time(const char *s, char delim, int digits, int64_t *ns)
 
 typedef struct {
     gzFile gz;
-    char line[TRI_LINE_MAX];
+    char line[HX_LINE_MAX];
     long lineno;
     int open; /* the line has no newline: the file's last, perhaps cut off mid-write */
 } text_t;
@@ -184,7 +183,7 @@ static int next_line(text_t *t, const char *path, char *msg, size_t size)
         return -1;
     }
     if (len == sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz)) {
-        say(msg, size, "%s:%ld: line longer than %d bytes%s", path, t->lineno, TRI_LINE_MAX - 1,
+        say(msg, size, "%s:%ld: line longer than %d characters%s", path, t->lineno, HX_LINE_MAX - 1,
             hx_cr_alone(t->line) ? HX_CR_ALONE_HINT : "");
         return -1;
     }
@@ -412,7 +411,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                          void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size)
 {
     text_t *t;
-    char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[TRI_LINE_MAX], delim = ',';
+    char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[HX_LINE_MAX], delim = ',';
     int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0, total;
     cols_t c;
     size_t cap = 0;

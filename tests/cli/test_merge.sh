@@ -391,6 +391,26 @@ expect_err "a_crcrlf.csv: 298 samples" "merge: CR CR LF read"
 expect_exit 0 "merge: a header ending in a delimiter" "$H" merge "$T/a_trail.csv" "$T/phyphox.csv" "$T/o.csv"
 if grep -q "fewer fields" "$T/err"; then fail "merge: a trailing delimiter counted as a field"; else pass "merge: a header's trailing delimiter names no field"; fi
 
+# the files of one sensor at 100 Hz, 300 rows (c_acc: t,acc_x,acc_y,acc_z;
+# c_gyr: t,gyr_x,gyr_y,gyr_z), and variants of the accelerometer's
+/usr/bin/python3 - "$T" <<'PY' || fail "writing the c_ files"
+import sys
+T = sys.argv[1]
+def rows(z, n=300, rate=100.0):
+    return ['%.4f,0.01,-0.02,%s' % (i / rate, z(i)) for i in range(n)]
+acc = rows(lambda i: '9.8')
+open(T + '/c_acc.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + acc) + '\n')
+open(T + '/c_gyr.csv', 'w').write('\n'.join(['t,gyr_x,gyr_y,gyr_z'] + rows(lambda i: '0.001')) + '\n')
+# row 100 (line 101) 5000 characters long: a free-text field after the axes
+long_ = acc[:99] + [acc[99] + ',' + 'n' * 4990] + acc[100:]
+open(T + '/c_long.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + long_) + '\n')
+PY
+# merge's lines are as long as the log reader's (HX_LINE_MAX): a row of
+# 5000 characters stops it there (it read lines up to 8191)
+expect_exit 1 "merge: a line longer than the log reader's" "$H" merge "$T/c_long.csv" "$T/c_gyr.csv" "$T/o.csv"
+expect_err "c_long.csv:101: line longer than 4095 characters (the 99 samples before it are merged)" \
+    "merge: the over-long line named as the log reader names it"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
     exit 1
