@@ -2695,9 +2695,33 @@ static int ug_plausible(double v)
     return fabs(v) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2;
 }
 
+int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size)
+{
+    /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at this
+     * limit: before the units check can name ug, a log in ug meets this
+     * error, so it asks about ug rather than saying only "no sensor reads
+     * that"; read as g (--units accel=g) it meets it at once. Asked when
+     * the value in ug is within the widest range of MEMS accelerometers
+     * (ug_plausible), as a question: raw counts of a 24-bit converter
+     * reach it too */
+    char give[96] = "";
+    if (fabs(v * scale) <= FNAV_INPUT_MAX_ABS) {
+        return 0;
+    }
+    if (ug_ask != NULL && ug_ask->acc_scale != HX_UG_MPS2 && ug_plausible(v)) {
+        /* the whole --units value, as the units check names it */
+        hx_csv_layout_t want = *ug_ask;
+        char items[80];
+        want.acc_scale = HX_UG_MPS2;
+        snprintf(give, sizeof give, "; in ug? 1 g is 1e6 ug: %s", hx_units_give(&want, items, sizeof items));
+    }
+    snprintf(text, size, "beyond %g in SI units (no sensor reads that%s)", FNAV_INPUT_MAX_ABS, give);
+    return 1;
+}
+
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
 {
-    char *f[HX_MAX_COLS];
+    char *f[HX_MAX_COLS], what[160];
     int n, i, neg;
     double v[6], tv = 0.0, aux = 0.0;
     int64_t t_ns = 0;
@@ -2786,28 +2810,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                 return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
             }
             /* what the core would refuse (and float would make Inf) is a
-             * reader error here, with its line */
-            if (fabs(v[c * 3 + i] * (c == 0 ? r->acc_scale : r->gyr_scale)) > FNAV_INPUT_MAX_ABS) {
-                /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at
-                 * this limit: before the units check can name ug, a log in
-                 * ug meets this error, so it asks about ug rather than
-                 * saying only "no sensor reads that"; read as g (--units
-                 * accel=g) it meets it at once. Asked when the value in ug is
-                 * within the widest range of MEMS accelerometers (400 g,
-                 * ST's H3LIS331DL), as a question: raw counts of a 24-bit
-                 * converter reach it too */
-                char give[96] = "";
-                if (c == 0 && r->meta.format == HX_FMT_CSV && r->acc_scale != HX_UG_MPS2 &&
-                    ug_plausible(v[i])) {
-                    /* the whole --units value, as the units check names it */
-                    hx_csv_layout_t want = r->layout;
-                    char items[80];
-                    want.acc_scale = HX_UG_MPS2;
-                    snprintf(give, sizeof give, "; in ug? 1 g is 1e6 ug: %s",
-                             hx_units_give(&want, items, sizeof items));
-                }
-                set_err(r, "%s:%ld: column %d ('%.20s') is beyond %g in SI units (no sensor reads that%s)", r->path,
-                        r->stats.lines, col + 1, f[col], FNAV_INPUT_MAX_ABS, give);
+             * reader error here, with its line (hx_value_beyond, merge's
+             * check too) */
+            if (hx_value_beyond(v[c * 3 + i], c == 0 ? r->acc_scale : r->gyr_scale,
+                                c == 0 && r->meta.format == HX_FMT_CSV ? &r->layout : NULL, what, sizeof what)) {
+                set_err(r, "%s:%ld: column %d ('%.20s') is %s", r->path, r->stats.lines, col + 1, f[col], what);
                 return FNAV_E_RANGE;
             }
         }

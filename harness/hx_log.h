@@ -415,6 +415,14 @@ const char *hx_field_count_text(const char *path, long first, long rows, long ch
  *  the first; "leave --units out" when every item is the default (s,
  *  m/s^2, rad/s). Returns buf. */
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
+/** Whether a value v read in a unit of scale SI units each is beyond what
+ *  any sensor reads (|v scale| > FNAV_INPUT_MAX_ABS, or not finite): 1 and
+ *  the text that follows "PATH:LINE: column N ('TEXT') is " in text ("beyond
+ *  1e+06 in SI units (no sensor reads that)"), else 0. ug_ask: the layout
+ *  of an accelerometer's column whose remedy is --units, NULL else: a value
+ *  that read in ug is within 400 g asks "in ug?" with the --units value.
+ *  The CSV log reader's check and merge's. */
+int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size);
 /** The lowest rate of a foot-mounted IMU the time-unit remedies aim at,
  *  Hz (hx_time_unit_fix's band is 20 Hz to HX_TIME_RATE_MAX_HZ). */
 #define HX_TIME_RATE_MIN_HZ 20.0

@@ -574,6 +574,20 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                     bad + 1, hf[bad], df[bad]);
                 break;
             }
+            for (k = 0; k < 3; k++) {
+                /* what the log reader refuses in the merged log: the file
+                 * stops here, as at a row of text */
+                char what[160];
+                if (hx_value_beyond(v[k], scale, kind == HX_TRI_ACC ? &l : NULL, what, sizeof what)) {
+                    say(f->error, sizeof f->error, "%s:%ld: column %d ('%.20s') is %s", path, t->lineno,
+                        c.ax[k] + 1, df[c.ax[k]], what);
+                    bad = c.ax[k];
+                    break;
+                }
+            }
+            if (bad >= 0) {
+                break;
+            }
             if (overflow) {
                 /* no sample kept: the probe decides */
             } else if (f->n > 0 && ns <= f->t_ns[f->n - 1]) {

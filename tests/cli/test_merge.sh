@@ -353,7 +353,8 @@ b[j - 2:j + 198] = b'\0' * 200                        # its last value's end and
 open(T + '/a_nul.csv', 'wb').write(bytes(b))
 open(T + '/a_nulend.csv', 'wb').write(s[:s.index(lines[299])].encode() + lines[299][:8].encode() + b'\0' * 40)
 f = lines[61].split(',')
-f[1] = f[1][:4] + ',' + f[1][4:]                      # a stray delimiter in row 61's first value
+f[1] = f[1][:-2] + ',' + f[1][-2:]                    # a stray delimiter in row 61's first value (its last two
+                                                      # digits a value within 1e6: beyond, the row stops merge)
 open(T + '/a_split.csv', 'w').write('\n'.join(lines[:61] + [','.join(f)] + lines[62:]))
 body = lines[:299] + [lines[299][:-3]]                 # the last line cut inside its value, no newline
 open(T + '/a_cut.csv', 'w').write('\n'.join(body))
@@ -404,12 +405,29 @@ open(T + '/c_gyr.csv', 'w').write('\n'.join(['t,gyr_x,gyr_y,gyr_z'] + rows(lambd
 # row 100 (line 101) 5000 characters long: a free-text field after the axes
 long_ = acc[:99] + [acc[99] + ',' + 'n' * 4990] + acc[100:]
 open(T + '/c_long.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + long_) + '\n')
+# row 200 (line 201) beyond what a sensor reads: 1e39 (a float's Inf in a
+# .bin), 5e6 m/s^2 (1 g in ug), 2e5 g (below 1e6 as written, 1.96e6 m/s^2)
+for name, z in (('c_inf', '1e39'), ('c_ug', '5e6'), ('c_g', '2e5')):
+    v = rows(lambda i: z if i == 199 else ('1' if name == 'c_g' else '9.8'))
+    open(T + '/' + name + '.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + v) + '\n')
 PY
 # merge's lines are as long as the log reader's (HX_LINE_MAX): a row of
 # 5000 characters stops it there (it read lines up to 8191)
 expect_exit 1 "merge: a line longer than the log reader's" "$H" merge "$T/c_long.csv" "$T/c_gyr.csv" "$T/o.csv"
 expect_err "c_long.csv:101: line longer than 4095 characters (the 99 samples before it are merged)" \
     "merge: the over-long line named as the log reader names it"
+# a value beyond 1e6 in SI units stops the file at its row, as the log
+# reader stops (merge wrote it, exit 0: 1e39 a .bin record info refused as
+# NaN or Inf, 5e6 a CSV row it refused as beyond 1e+06)
+expect_exit 1 "merge: a value of 1e39" "$H" merge "$T/c_inf.csv" "$T/c_gyr.csv" "$T/o.csv"
+expect_err "c_inf.csv:201: column 4 ('1e39') is beyond 1e+06 in SI units (no sensor reads that) (the 199 samples before it are merged)" \
+    "merge: 1e39 refused at its row in the log reader's words"
+expect_exit 0 "info of the samples merged before 1e39" "$H" info "$T/o.csv"
+expect_exit 1 "merge: a value of 5e6 m/s^2" "$H" merge "$T/c_ug.csv" "$T/c_gyr.csv" "$T/o.bin"
+expect_err "c_ug.csv:201: column 4 ('5e6') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
+    "merge: 5e6 refused, ug asked about as the log reader asks"
+expect_exit 1 "merge: 2e5 g, beyond 1e6 once in m/s^2" "$H" merge "$T/c_g.csv" "$T/c_gyr.csv" "$T/o.csv" --units accel=g
+expect_err "c_g.csv:201: column 4 ('2e5') is beyond 1e+06 in SI units" "merge: the value judged in SI units"
 
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
