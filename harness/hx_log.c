@@ -1154,9 +1154,7 @@ static int comment_header(const char *text)
     return n >= 7 && hx_names_match(f, n, &m) && m.col[0] >= 0 ? 2 : 0;
 }
 
-/* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
- * Shimmer's Consensys writes it): 1 and the separator in *d. */
-static int sep_line(const char *s, char *d)
+int hx_sep_line(const char *s, char *d)
 {
     if (*s == '"') {
         s++;
@@ -1174,6 +1172,21 @@ static int sep_line(const char *s, char *d)
         s++;
     }
     return *s == '\0' && (*d == ',' || *d == ';' || *d == '\t' || *d == '|');
+}
+
+hx_comment_t hx_comment_line(const char *line, const char **text)
+{
+    int ch;
+    if (!comment(line)) {
+        return HX_COMMENT_NONE;
+    }
+    line = strchr(line, '#') + 1;
+    ch = comment_header(line);
+    while (*line == ' ' || *line == '\t') {
+        line++;
+    }
+    *text = line;
+    return ch == 1 ? HX_COMMENT_HEADER : ch == 2 ? HX_COMMENT_HEADER_IF_DATA : HX_COMMENT_NOTE;
 }
 
 /* The PLab PicoQuake acquisition CSV's first line. */
@@ -1211,7 +1224,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
             }
             copy_str(first, sizeof first, h);
             first[strcspn(first, "\n")] = '\0';
-            if (sep_line(first, &d) && strchr(h, '\n') != NULL) {
+            if (hx_sep_line(first, &d) && strchr(h, '\n') != NULL) {
                 h = strchr(h, '\n') + 1; /* Excel's separator line: the header is the next */
                 continue;
             }
@@ -1805,13 +1818,24 @@ static int ros_stamp_unset(hx_reader_t *r, char **f, int n)
     return 0;
 }
 
+int hx_data_row(const char *line)
+{
+    const char *b = line + strspn(line, " \t\"");
+    char first[64];
+    double v;
+    int64_t t_ns;
+    snprintf(first, sizeof first, "%.*s", (int)strcspn(b, ",;\t \"\r\n"), b);
+    return parse_num(first, &v) == 0 || parse_datetime_ns(first, &t_ns) == 0 ||
+           (strlen(first) == 10 && isdigit((unsigned char)first[0]) && (first[4] == '-' || first[4] == '/'));
+}
+
 /* Whether the next line that is not blank is a row of data, its first
  * field a number or a date: a comment of names before it is the header
  * (comment_header 2); before another header line, or none, it is a note.
  * The reader is left as it was, r->line too. 1 data, 0 not, -1 error. */
 static int data_follows(hx_reader_t *r)
 {
-    char keep[HX_LINE_MAX], first[64];
+    char keep[HX_LINE_MAX];
     const long lines = r->stats.lines;
     const z_off_t pos = gztell(r->gz);
     int rc, data = 0;
@@ -1819,12 +1843,7 @@ static int data_follows(hx_reader_t *r)
     while ((rc = read_line(r)) > 0 && blank(r->line)) {
     }
     if (rc > 0) {
-        const char *b = r->line + strspn(r->line, " \t\"");
-        double v;
-        int64_t t_ns;
-        snprintf(first, sizeof first, "%.*s", (int)strcspn(b, ",;\t \"\r\n"), b);
-        data = parse_num(first, &v) == 0 || parse_datetime_ns(first, &t_ns) == 0 ||
-               (strlen(first) == 10 && isdigit((unsigned char)first[0]) && (first[4] == '-' || first[4] == '/'));
+        data = hx_data_row(r->line);
     }
     if (read_again_from(r, pos, lines) != 0) {
         return -1;
@@ -1928,6 +1947,8 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
     int n, i, rc, total, dc_line, tried = 0, sep_given = 0, consensys;
+    hx_comment_t ch;
+    const char *text;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
     z_off_t hpos = 0;
     long hlines = 0;
@@ -1947,19 +1968,17 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         if (blank(r->line)) {
             continue;
         }
-        if (!sep_given && sep_line(r->line, &r->delim)) {
+        if (!sep_given && hx_sep_line(r->line, &r->delim)) {
             sep_given = 1; /* the separator the line names, the header's next */
             continue;
         }
-        if (r->meta.format == HX_FMT_CSV && comment(r->line)) {
+        if (r->meta.format == HX_FMT_CSV && (ch = hx_comment_line(r->line, &text)) != HX_COMMENT_NONE) {
             /* "# t,ax,...": the header behind the comment sign; any other
              * comment line before the header is skipped */
-            char *h = strchr(r->line, '#') + 1;
-            const int ch = comment_header(h);
-            if (ch == 0) {
+            if (ch == HX_COMMENT_NOTE) {
                 continue;
             }
-            if (ch == 2) {
+            if (ch == HX_COMMENT_HEADER_IF_DATA) {
                 const int data = data_follows(r);
                 if (data < 0) {
                     return -1;
@@ -1968,10 +1987,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                     continue; /* a note naming the columns before the header itself */
                 }
             }
-            while (*h == ' ' || *h == '\t') {
-                h++;
-            }
-            memmove(r->line, h, strlen(h) + 1);
+            memmove(r->line, text, strlen(text) + 1);
         }
         break;
     }

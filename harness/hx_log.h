@@ -365,6 +365,26 @@ typedef struct {
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** Excel's separator line before a header ("sep=;", "\"sep=\t\"", as
+ *  Shimmer's Consensys writes it): 1 and the separator in *d, else 0. The
+ *  log reader's and merge's. */
+int hx_sep_line(const char *s, char *d);
+/** What a line of a text log whose first character but blanks is '#' is
+ *  before the header (hx_comment_line). */
+typedef enum {
+    HX_COMMENT_NONE = 0,          /**< no comment line */
+    HX_COMMENT_NOTE = 1,          /**< a comment, skipped */
+    HX_COMMENT_HEADER = 2,        /**< a commented header: numpy's savetxt "# t,ax,..." (the name t is enough;
+                                       blank-separated, all seven interchange names) */
+    HX_COMMENT_HEADER_IF_DATA = 3 /**< a time and the six channels by name (EuRoC's "#timestamp [ns],..."): the
+                                       header when a row of data follows it (hx_data_row), else a note */
+} hx_comment_t;
+/** Classify line as the log reader does before the header; *text: the
+ *  comment's text after the '#' and blanks (unless HX_COMMENT_NONE). */
+hx_comment_t hx_comment_line(const char *line, const char **text);
+/** Whether line is a row of data: its first field (after blanks and a
+ *  quote) a number, a date and time, or a date. */
+int hx_data_row(const char *line);
 /** The text readers' line buffer, bytes (the log reader's and merge's): a
  *  line of more than HX_LINE_MAX - 1 characters stops the read, "PATH:LINE:
  *  line longer than 4095 characters" (docs/log-format.md, "CSV

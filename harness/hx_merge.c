@@ -360,6 +360,24 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     return 0;
 }
 
+/* A header's delimiter: a comma, else a tab, else a semicolon, else
+ * blanks (as the log reader takes the first it finds). */
+static char header_delim(const char *h)
+{
+    return strchr(h, ',') != NULL ? ',' : strchr(h, '\t') != NULL ? '\t' : strchr(h, ';') != NULL ? ';' : ' ';
+}
+
+/* Whether a comment's text, a note to the log reader, names one sensor's
+ * columns (hx_tri_header_kind): "# t acc_x acc_y acc_z", numpy's savetxt
+ * header with blanks between the names (the log reader's needs all seven
+ * interchange names, so that "# t is in s" is no header). */
+static int comment_names_sensor(const char *text)
+{
+    char copy[HX_LINE_MAX], *f[TRI_MAX_COLS];
+    snprintf(copy, sizeof copy, "%s", text);
+    return hx_tri_header_kind(f, hx_split_fields(copy, header_delim(text), f, TRI_MAX_COLS)) >= 0;
+}
+
 /* Grow the arrays to hold n + 1 samples. 0, -1 out of memory. */
 static int grow(hx_tri_t *f, size_t *cap)
 {
@@ -412,7 +430,9 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
 {
     text_t *t;
     char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[HX_LINE_MAX], delim = ',';
-    int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0, total;
+    int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0, total, sep_given = 0;
+    long hline;
+    hx_comment_t ch;
     cols_t c;
     size_t cap = 0;
     double scale, *probe = NULL;
@@ -445,8 +465,11 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
             return -1;
         }
     }
-    /* the header: the first line that is neither blank nor a '#' comment */
+    /* the header: the first line that is neither blank nor a comment, after
+     * Excel's separator line, or a commented header, as the log reader
+     * finds it (hx_sep_line, hx_comment_line) */
     for (;;) {
+        const char *text;
         rc = next_line(t, path, err, err_size);
         if (rc <= 0) {
             if (rc == 0) {
@@ -458,28 +481,52 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
             (unsigned char)t->line[2] == 0xBF) {
             memmove(t->line, t->line + 3, strlen(t->line + 3) + 1); /* a UTF-8 byte-order mark */
         }
-        if (!blank_line(t->line) && t->line[0] != '#') {
+        if (blank_line(t->line)) {
+            continue;
+        }
+        if (!sep_given && hx_sep_line(t->line, &delim)) {
+            sep_given = 1; /* the separator the line names, the header's next */
+            continue;
+        }
+        ch = hx_comment_line(t->line, &text);
+        if (ch == HX_COMMENT_NOTE && comment_names_sensor(text)) {
+            ch = HX_COMMENT_HEADER_IF_DATA; /* "# t acc_x acc_y acc_z": one sensor's names */
+        }
+        if (ch == HX_COMMENT_NOTE) {
+            continue;
+        }
+        if (ch != HX_COMMENT_NONE) {
+            memmove(t->line, text, strlen(text) + 1);
+        }
+        break;
+    }
+    for (;;) {
+        memcpy(hdr, t->line, sizeof hdr);
+        hline = t->lineno;
+        /* the first data row, for the time column's choice */
+        do {
+            rc = next_line(t, path, err, err_size);
+            if (rc <= 0) {
+                if (rc == 0) {
+                    say(err, err_size, "%s: no data after the header (line %ld)", path, t->lineno);
+                }
+                goto fail;
+            }
+        } while (blank_line(t->line) || t->line[0] == '#');
+        if (ch != HX_COMMENT_HEADER_IF_DATA || hx_data_row(t->line)) {
             break;
         }
+        ch = HX_COMMENT_NONE; /* a note naming the columns before the header itself: this line */
     }
-    memcpy(hdr, t->line, sizeof hdr);
-    delim = strchr(hdr, ',') != NULL ? ',' : strchr(hdr, '\t') != NULL ? '\t' : strchr(hdr, ';') != NULL ? ';' : ' ';
+    if (!sep_given || strchr(hdr, delim) == NULL) {
+        delim = header_delim(hdr);
+    }
     total = hx_fields_total(hdr, delim);
     nh = hx_split_fields(hdr, delim, hf, TRI_MAX_COLS);
     /* a trailing delimiter names no field (as the log reader counts them) */
     f->hdr_fields = delim == ' ' || total > TRI_MAX_COLS ? nh : hx_named_fields(hf, nh, total);
-    /* the first data row, for the time column's choice */
-    do {
-        rc = next_line(t, path, err, err_size);
-        if (rc <= 0) {
-            if (rc == 0) {
-                say(err, err_size, "%s: no data after the header (line %ld)", path, t->lineno);
-            }
-            goto fail;
-        }
-    } while (blank_line(t->line) || t->line[0] == '#');
     nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
-    if (find_cols(hf, nh, df, nd, delim, kind, path, 1, &c, err, err_size) != 0) {
+    if (find_cols(hf, nh, df, nd, delim, kind, path, hline, &c, err, err_size) != 0) {
         if (total > TRI_MAX_COLS && strlen(err) + 80 < err_size) {
             /* names past the columns read may be the ones looked for */
             say(err + strlen(err), err_size - strlen(err), " (merge reads the first %d columns of a header; this "

@@ -410,6 +410,15 @@ open(T + '/c_long.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + long_) + 
 for name, z in (('c_inf', '1e39'), ('c_ug', '5e6'), ('c_g', '2e5')):
     v = rows(lambda i: z if i == 199 else ('1' if name == 'c_g' else '9.8'))
     open(T + '/' + name + '.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + v) + '\n')
+# headers the log reader finds (docs/log-format.md, "CSV interchange"):
+# numpy's savetxt header, commented, with commas and with blanks; Excel's
+# separator line; a note before a header naming no axis (line 2)
+import numpy as np
+d = np.array([[float(x) for x in r.split(',')] for r in acc])
+np.savetxt(T + '/c_np.csv', d, delimiter=',', header='t,acc_x,acc_y,acc_z')
+np.savetxt(T + '/c_npb.csv', d, header='t acc_x acc_y acc_z')
+open(T + '/c_sep.csv', 'w').write('\n'.join(['sep=;', 't;acc_x;acc_y;acc_z'] + [r.replace(',', ';') for r in acc]) + '\n')
+open(T + '/c_note.csv', 'w').write('\n'.join(['# logger v2', 'time,foo,bar,baz'] + acc) + '\n')
 PY
 # merge's lines are as long as the log reader's (HX_LINE_MAX): a row of
 # 5000 characters stops it there (it read lines up to 8191)
@@ -428,6 +437,15 @@ expect_err "c_ug.csv:201: column 4 ('5e6') is beyond 1e+06 in SI units (no senso
     "merge: 5e6 refused, ug asked about as the log reader asks"
 expect_exit 1 "merge: 2e5 g, beyond 1e6 once in m/s^2" "$H" merge "$T/c_g.csv" "$T/c_gyr.csv" "$T/o.csv" --units accel=g
 expect_err "c_g.csv:201: column 4 ('2e5') is beyond 1e+06 in SI units" "merge: the value judged in SI units"
+# the header found as the log reader finds it (merge read numpy's first
+# row as the header, 'the header names no accelerometer axis', and said
+# line 1 of a header on line 2)
+for v in c_np c_npb c_sep; do
+    expect_exit 0 "merge: $v's header found as the log reader finds it" "$H" merge "$T/$v.csv" "$T/c_gyr.csv" "$T/o.csv"
+    expect_err "$v.csv: 300 samples, 100 Hz, 2.99 s; time 't' in s, x, y, z 'acc_x', 'acc_y', 'acc_z'" "merge: $v read whole"
+done
+expect_exit 1 "merge: a header naming no axis under a note" "$H" merge "$T/c_note.csv" "$T/c_gyr.csv" "$T/o.csv"
+expect_err "c_note.csv:2: the header names no accelerometer axis" "merge: the header's own line named"
 
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
