@@ -680,9 +680,15 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         }
         if (rate > 0.0 && (rate < HX_TIME_RATE_MIN_HZ || rate > HX_TIME_RATE_MAX_HZ) &&
             hx_time_unit_fix(rate, 9, &fix)) {
+            /* 1 to 20 Hz may be a slow logger's seconds as well (12.5 Hz read
+             * as ms is 12.5 kHz): both named, merge has no floor of its own */
+            char slow[96] = "";
+            if (rate >= 1.0 && rate < HX_TIME_RATE_MIN_HZ) {
+                say(slow, sizeof slow, "; if they are seconds, a %.4g Hz log: --units time=s", rate);
+            }
             say(err, err_size, "%s: the time column '%s' names no unit, and in seconds its stamps give %.3g Hz: "
-                               "they look like %s, a %.4g Hz log (give --units time=%s)",
-                path, f->cols[0], rate, fix.name, fix.rate_hz, fix.opt);
+                               "they look like %s, a %.4g Hz log (give --units time=%s)%s",
+                path, f->cols[0], rate, fix.name, fix.rate_hz, fix.opt, slow);
             goto fail;
         }
     }

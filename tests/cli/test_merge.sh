@@ -419,6 +419,9 @@ np.savetxt(T + '/c_np.csv', d, delimiter=',', header='t,acc_x,acc_y,acc_z')
 np.savetxt(T + '/c_npb.csv', d, header='t acc_x acc_y acc_z')
 open(T + '/c_sep.csv', 'w').write('\n'.join(['sep=;', 't;acc_x;acc_y;acc_z'] + [r.replace(',', ';') for r in acc]) + '\n')
 open(T + '/c_note.csv', 'w').write('\n'.join(['# logger v2', 'time,foo,bar,baz'] + acc) + '\n')
+# a slow logger: 12.5 Hz, stamps in seconds, no unit named
+open(T + '/c_acc12.csv', 'w').write('\n'.join(['t,acc_x,acc_y,acc_z'] + rows(lambda i: '9.8', rate=12.5)) + '\n')
+open(T + '/c_gyr12.csv', 'w').write('\n'.join(['t,gyr_x,gyr_y,gyr_z'] + rows(lambda i: '0.001', rate=12.5)) + '\n')
 PY
 # merge's lines are as long as the log reader's (HX_LINE_MAX): a row of
 # 5000 characters stops it there (it read lines up to 8191)
@@ -446,6 +449,13 @@ for v in c_np c_npb c_sep; do
 done
 expect_exit 1 "merge: a header naming no axis under a note" "$H" merge "$T/c_note.csv" "$T/c_gyr.csv" "$T/o.csv"
 expect_err "c_note.csv:2: the header names no accelerometer axis" "merge: the header's own line named"
+# stamps of 1 to 20 Hz in seconds: the remedy names seconds too (it named
+# ms alone, which made the 12.5 Hz log one of 12.5 kHz), and it works
+expect_exit 1 "merge: a 12.5 Hz log, its time unit not named" "$H" merge "$T/c_acc12.csv" "$T/c_gyr12.csv" "$T/o.csv"
+expect_err "in seconds its stamps give 12.5 Hz: they look like milliseconds, a 1.25e+04 Hz log (give --units time=ms); if they are seconds, a 12.5 Hz log: --units time=s" \
+    "merge: seconds named beside ms for a 12.5 Hz log"
+expect_exit 0 "merge: the 12.5 Hz log with --units time=s" "$H" merge "$T/c_acc12.csv" "$T/c_gyr12.csv" "$T/o.csv" --units time=s
+expect_err "c_acc12.csv: 300 samples, 12.5 Hz, 23.92 s" "merge: the 12.5 Hz log read in seconds"
 
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
