@@ -729,7 +729,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     } else if (s->bias_eq6) {
         /* eq6 rereads a profile's bias sd; the ideal sensor has none (the
          * option is ignored with a warning, not without a word) */
-        hx_warn(cmd, "--bias-sigma eq6 rereads a profile's bias sd; --profile none has no bias model: ignored");
+        hx_warn(cmd, "--bias-sigma eq6 rereads a profile's bias sd; --profile none has no bias model: ignored%s",
+                strcmp(cmd, "montecarlo") == 0 ? " (the filter's profile is read as given)" : "");
     }
     for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
         if (hx_effect_parse(&s->err, hx_arg_at(a, "--effect", i), err, sizeof err) != 0) {

@@ -342,5 +342,32 @@ else
     echo "SKIP montecarlo stopped by two signals: it ended within 3 s"
 fi
 
+# --bias-sigma eq6 applies to the sensor's profile and to the filter's when
+# it is that profile: with --profile none the warning said "ignored" while
+# the filter's navchip was read by eq. 6 (bias NEES 0.0138 -> 0.0094) and
+# the summary said "eq. 6 reading"; with --filter-profile the summary said
+# "as given" and the JSON "eq6". Each is said apart (summary and JSON).
+expect_exit 0 "montecarlo --profile none --bias-sigma eq6" "$H" montecarlo --profile none --bias-sigma eq6 \
+    --seeds 2 --duration 12 --json "$T/eq6n.json"
+expect_err "--profile none has no bias model: ignored (the filter's profile is read as given)" \
+    "eq6 with --profile none: the filter named in the warning"
+expect_out "^sensor      none (no bias model), filter navchip (bias sigma: as given)$" \
+    "eq6 with --profile none: the summary says the filter's profile as given"
+json "$T/eq6n.json" 'j["bias_sigma"] == "eq6" and j["sensor_bias_sigma"] is None and j["filter_bias_sigma"] == "given"' &&
+    pass "eq6 with --profile none: JSON sensor_bias_sigma null, filter_bias_sigma given" ||
+    fail "eq6 with --profile none: JSON bias readings"
+expect_exit 0 "montecarlo --profile none" "$H" montecarlo --profile none --seeds 2 --duration 12 --json "$T/none.json"
+json "$T/eq6n.json" 'j["variants"][0]["nees"]["bias"]["time_average"] == json.load(open("'"$T"'/none.json"))["variants"][0]["nees"]["bias"]["time_average"]' &&
+    pass "eq6 with --profile none: the filter's bias NEES unchanged" || fail "eq6 with --profile none changed the filter"
+expect_exit 0 "montecarlo eq6 with --filter-profile" "$H" montecarlo --profile mtx --bias-sigma eq6 --filter-profile mtx \
+    --seeds 1 --duration 8 --json "$T/eq6f.json"
+expect_out "^sensor      mtx (bias sigma: eq. 6 reading), filter mtx (bias sigma: as given)$" \
+    "eq6 with --filter-profile: the summary says both readings"
+json "$T/eq6f.json" 'j["sensor_bias_sigma"] == "eq6" and j["filter_bias_sigma"] == "given"' &&
+    pass "eq6 with --filter-profile: JSON sensor eq6, filter given" || fail "eq6 with --filter-profile: JSON bias readings"
+expect_exit 0 "montecarlo eq6" "$H" montecarlo --profile mtx --bias-sigma eq6 --seeds 1 --duration 8
+expect_out "^sensor      mtx (bias sigma: eq. 6 reading), filter mtx (bias sigma: eq. 6 reading)$" \
+    "eq6: the summary says both read by eq. 6"
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
