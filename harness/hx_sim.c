@@ -260,6 +260,36 @@ uint32_t hx_channels_parse(const char *s)
     return m;
 }
 
+/* an effect without a per-channel parameter acts on whole samples (jitter,
+ * dropout, duplicate, alias): fnav_imuerr_enable gives it every channel */
+static int effect_is_scalar(const fnav_effect_info_t *info)
+{
+    int k;
+    for (k = 0; k < info->nparams; k++) {
+        if (info->params[k].flags & FNAV_PARAM_PER_CHANNEL) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void effect_ch_refusal(const fnav_effect_info_t *info, char *err, size_t err_size)
+{
+    size_t len;
+    int e;
+    len = (size_t)snprintf(err, err_size, "effect %s acts on whole samples, not on channels: no ch= (ch= is for",
+                           info->name);
+    for (e = 0; e < FNAV_EFFECT_COUNT && len < err_size; e++) {
+        const fnav_effect_info_t *o = fnav_imuerr_effect_info((fnav_effect_id_t)e);
+        if (o != NULL && !effect_is_scalar(o)) {
+            len += (size_t)snprintf(err + len, err_size - len, " %s", o->name);
+        }
+    }
+    if (len < err_size) {
+        snprintf(err + len, err_size - len, ")");
+    }
+}
+
 int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size_t err_size)
 {
     char buf[512], *tok[32], *save = NULL, *t;
@@ -296,6 +326,12 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
     }
     mask = info->allowed;
     for (i = 1; i < ntok; i++) {
+        if (strncmp(tok[i], "ch=", 3) == 0 && effect_is_scalar(info)) {
+            /* it acts on whole samples (their timing, their delivery):
+             * refused, not ignored (dropout:ch=gz dropped every channel) */
+            effect_ch_refusal(info, err, err_size);
+            return -1;
+        }
         if (strncmp(tok[i], "ch=", 3) == 0) {
             mask = hx_channels_parse(tok[i] + 3);
             if (mask == 0u) {

@@ -68,7 +68,9 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
  *   NAME                    switch on (all allowed channels, current parameters)
  *   NAME:off                switch off
  *   NAME[:ch=CH][:P=V]...   switch on for channels CH with parameters P = V (SI)
- * CH is all, acc, gyro or a '+'-separated list of ax ay az gx gy gz.
+ * CH is all, acc, gyro or a '+'-separated list of ax ay az gx gy gz; an effect on whole
+ * samples (no per-channel parameter: jitter, dropout, duplicate, alias)
+ * takes no ch=.
  * Parameters given apply to the channels of this specification only.
  * @return 0, or -1 with a one-line message in err.
  */

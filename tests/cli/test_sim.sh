@@ -24,6 +24,15 @@ expect_exit 2 "bad effect parameter" "$H" sim --out "$T/x.bin" --effect quant:si
 expect_err "has no parameter 'size'" "bad parameter is named"
 expect_exit 2 "effect value out of range" "$H" sim --out "$T/x.bin" --effect dropout:prob=1.5
 expect_err "outside" "range error"
+# ch= on an effect that acts on whole samples was ignored (dropout:ch=gz
+# dropped every channel's sample, exit 0): refused, the effects that take it named
+expect_exit 2 "dropout with ch=" "$H" sim --out "$T/x.bin" --duration 1 --effect dropout:ch=gz:prob=0.5
+expect_err "effect dropout acts on whole samples, not on channels: no ch= (ch= is for white ar1 .* gsens)" \
+    "dropout with ch=: refused, the effects with channels named"
+expect_exit 2 "jitter with ch=" "$H" sim --out "$T/x.bin" --duration 1 --effect jitter:ch=ax
+expect_err "effect jitter acts on whole samples" "jitter with ch=: refused"
+expect_exit 2 "montecarlo: alias with ch=" "$H" montecarlo --seeds 1 --duration 1 --effect alias:ch=acc:factor=2
+expect_err "effect alias acts on whole samples" "montecarlo: alias with ch=: refused"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
