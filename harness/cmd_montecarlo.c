@@ -782,6 +782,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
         hx_sim_warn_cut("montecarlo", motion, su.motion_name, su.duration_s);
+        hx_sim_warn_unused("montecarlo", &a, motion, su.motion_name);
         mc.sim.motion = motion;
         mc.sim.err = su.err;
         mc.sim.decim = su.decim;

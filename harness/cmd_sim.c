@@ -161,6 +161,7 @@ int hx_cmd_sim(int argc, char **argv)
     }
 
     hx_sim_warn_cut("sim", motion, motion_name, dur);
+    hx_sim_warn_unused("sim", &a, motion, motion_name);
     if (rate < HX_TIME_RATE_MIN_HZ && hx_motion_strides(motion) > 0) {
         /* a walk too slow to replay (a static log at any rate serves
          * allan and psd): said before the samples, not by replay later */

@@ -51,6 +51,7 @@ struct hx_motion {
     double C_fs[3][3]; /* sensor mounting: v_f = C_fs v_s */
     double q_fs[4];
     int strides;
+    int walk_strides; /* of them, those of the walking gait (--speed, --cadence, --stride) */
     /* builder state */
     double odo;
     int leg;
@@ -505,6 +506,9 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
         return fail(m, "the shoe ringing outlasts the stance; shorten ring_s", NULL);
     }
     m->strides++;
+    if (g == &cf->walk) {
+        m->walk_strides++;
+    }
     return push_land(m, tf, L);
 }
 
@@ -915,6 +919,11 @@ double hx_motion_duration(const hx_motion_t *m)
 int hx_motion_strides(const hx_motion_t *m)
 {
     return m->strides;
+}
+
+int hx_motion_walk_strides(const hx_motion_t *m)
+{
+    return m->walk_strides;
 }
 
 int hx_motion_strides_until(const hx_motion_t *m, double t)

@@ -124,6 +124,9 @@ const char *hx_motion_scenario_list(void);
 double hx_motion_duration(const hx_motion_t *m);
 /** Number of footfalls (completed strides). */
 int hx_motion_strides(const hx_motion_t *m);
+/** Of them, the strides of the walking gait (cfg->walk: walk legs and
+ *  home); 0 when the options that set it have no effect. */
+int hx_motion_walk_strides(const hx_motion_t *m);
 /** Number of footfalls at or before time t, s (the strides of an output cut
  *  by --duration). */
 int hx_motion_strides_until(const hx_motion_t *m, double t);

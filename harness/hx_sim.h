@@ -127,6 +127,11 @@ typedef struct {
  *  printed as "harness CMD: error: ..."). */
 int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *s);
 
+/** Warn of the gait options the motion m (built from --motion `name`)
+ *  leaves without effect: --speed, --cadence, --stride without a walking
+ *  stride, --impact-ms without any stride. */
+void hx_sim_warn_unused(const char *cmd, const hx_args_t *a, const hx_motion_t *m, const char *name);
+
 /** The paper's eq. (6) reading of a profile's bias sigmas: the Allan floor
  *  is BS = sigma_bias sqrt(tau / T_s) and a Gauss-Markov process with that
  *  floor has a stationary sd of BS / 0.617 (docs/simulator.md). */

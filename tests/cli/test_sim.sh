@@ -33,6 +33,27 @@ expect_exit 2 "jitter with ch=" "$H" sim --out "$T/x.bin" --duration 1 --effect 
 expect_err "effect jitter acts on whole samples" "jitter with ch=: refused"
 expect_exit 2 "montecarlo: alias with ch=" "$H" montecarlo --seeds 1 --duration 1 --effect alias:ch=acc:factor=2
 expect_err "effect alias acts on whole samples" "montecarlo: alias with ch=: refused"
+# the walking gait's options with no walking stride were ignored without a
+# word (sim --motion run --speed 5 --cadence 200: the log byte-identical)
+expect_exit 0 "run with --speed" "$H" sim --out "$T/x.bin" --motion run --duration 20 --speed 5 --cadence 200
+expect_err "warning: --speed, --cadence set the walking gait; the motion 'run' has no walking stride (run, stairs and turns keep their own gaits): ignored" \
+    "run with --speed, --cadence: said ignored"
+expect_exit 0 "stand with --stride" "$H" sim --out "$T/x.bin" --motion stand --duration 2 --stride 1
+expect_err "warning: --stride sets the walking gait; the motion 'stand' has no walking stride (no stride at all): ignored" \
+    "stand with --stride: said ignored"
+expect_exit 0 "walk with --speed" "$H" sim --out "$T/x.bin" --motion walk --duration 20 --speed 1.5
+if grep -q "ignored" "$T/err"; then fail "walk with --speed: warned"; else pass "walk with --speed: no warning"; fi
+expect_exit 0 "montecarlo: run with --speed" "$H" montecarlo --motion run --duration 8 --seeds 1 --speed 2 --quiet
+expect_err "warning: --speed sets the walking gait; the motion 'run' has no walking stride" "montecarlo: run with --speed: said ignored"
+# --impact-ms on a motion without strides raised the internal rate to 10 kHz
+# "for impacts" (stand: 5 times as long): left at the default, said ignored
+expect_exit 0 "stand with --impact-ms 0.5" "$H" sim --out "$T/x.bin" --motion stand --duration 2 --impact-ms 0.5
+expect_out "^sampling    200 Hz, internal x10 " "stand with --impact-ms: the internal rate left at its default"
+expect_err "warning: --impact-ms sets the landing of a stride; the motion 'stand' has no stride: ignored" \
+    "stand with --impact-ms: said ignored"
+if grep -q "raised" "$T/err"; then fail "stand with --impact-ms: the rate raised"; else pass "stand with --impact-ms: no raise said"; fi
+expect_exit 0 "walk with --impact-ms 0.5" "$H" sim --out "$T/x.bin" --motion walk --duration 2 --impact-ms 0.5
+expect_out "^sampling    200 Hz, internal x50 " "walk with --impact-ms: the internal rate raised"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
