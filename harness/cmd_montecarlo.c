@@ -689,6 +689,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
                  (double)su.err.rate_hz, HX_TIME_RATE_MIN_HZ);
         return HX_EXIT_USAGE;
     }
+    if (su.err.mask[FNAV_EFFECT_DROPOUT] != 0u && su.err.dropout.prob >= FNAV_R(1.0)) {
+        /* no run would have a sample to navigate (it reported "no aligned
+         * estimate" for every run, exit 0) */
+        hx_error("montecarlo", "--effect dropout:prob=1 drops every sample: no run has one to navigate");
+        return HX_EXIT_USAGE;
+    }
     {
         static fnav_adapter_t ad[2];
         hx_mc_nav_t navs[2];

@@ -274,6 +274,14 @@ int hx_cmd_sim(int argc, char **argv)
         if (truth != NULL) {
             fprintf(so, "truth       %s\n", truth);
         }
+        if (ctx.written == 0u) {
+            /* as convert's empty window: said, exit 1, the log valid and
+             * empty (dropout:prob=1 exited 0 with a log info refuses) */
+            hx_error("sim", "%s: no sample written: the dropout effect (prob %g) dropped every one of the %zu ticks "
+                            "(the log is valid and empty)",
+                     out, (double)sc.err.dropout.prob, ctx.ticks);
+            status = HX_EXIT_DATA;
+        }
     }
     hx_motion_free(motion);
     return status;

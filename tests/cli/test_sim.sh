@@ -26,34 +26,47 @@ expect_exit 2 "effect value out of range" "$H" sim --out "$T/x.bin" --effect dro
 expect_err "outside" "range error"
 # ch= on an effect that acts on whole samples was ignored (dropout:ch=gz
 # dropped every channel's sample, exit 0): refused, the effects that take it named
-expect_exit 2 "dropout with ch=" "$H" sim --out "$T/x.bin" --duration 1 --effect dropout:ch=gz:prob=0.5
+expect_exit 2 "dropout with ch=" "$H" sim --out "$T/ch.bin" --duration 1 --effect dropout:ch=gz:prob=0.5
 expect_err "effect dropout acts on whole samples, not on channels: no ch= (ch= is for white ar1 .* gsens)" \
     "dropout with ch=: refused, the effects with channels named"
-expect_exit 2 "jitter with ch=" "$H" sim --out "$T/x.bin" --duration 1 --effect jitter:ch=ax
+expect_exit 2 "jitter with ch=" "$H" sim --out "$T/ch.bin" --duration 1 --effect jitter:ch=ax
 expect_err "effect jitter acts on whole samples" "jitter with ch=: refused"
 expect_exit 2 "montecarlo: alias with ch=" "$H" montecarlo --seeds 1 --duration 1 --effect alias:ch=acc:factor=2
 expect_err "effect alias acts on whole samples" "montecarlo: alias with ch=: refused"
 # the walking gait's options with no walking stride were ignored without a
 # word (sim --motion run --speed 5 --cadence 200: the log byte-identical)
-expect_exit 0 "run with --speed" "$H" sim --out "$T/x.bin" --motion run --duration 20 --speed 5 --cadence 200
+expect_exit 0 "run with --speed" "$H" sim --out "$T/gait.bin" --motion run --duration 20 --speed 5 --cadence 200
 expect_err "warning: --speed, --cadence set the walking gait; the motion 'run' has no walking stride (run, stairs and turns keep their own gaits): ignored" \
     "run with --speed, --cadence: said ignored"
-expect_exit 0 "stand with --stride" "$H" sim --out "$T/x.bin" --motion stand --duration 2 --stride 1
+expect_exit 0 "stand with --stride" "$H" sim --out "$T/gait.bin" --motion stand --duration 2 --stride 1
 expect_err "warning: --stride sets the walking gait; the motion 'stand' has no walking stride (no stride at all): ignored" \
     "stand with --stride: said ignored"
-expect_exit 0 "walk with --speed" "$H" sim --out "$T/x.bin" --motion walk --duration 20 --speed 1.5
+expect_exit 0 "walk with --speed" "$H" sim --out "$T/gait.bin" --motion walk --duration 20 --speed 1.5
 if grep -q "ignored" "$T/err"; then fail "walk with --speed: warned"; else pass "walk with --speed: no warning"; fi
 expect_exit 0 "montecarlo: run with --speed" "$H" montecarlo --motion run --duration 8 --seeds 1 --speed 2 --quiet
 expect_err "warning: --speed sets the walking gait; the motion 'run' has no walking stride" "montecarlo: run with --speed: said ignored"
 # --impact-ms on a motion without strides raised the internal rate to 10 kHz
 # "for impacts" (stand: 5 times as long): left at the default, said ignored
-expect_exit 0 "stand with --impact-ms 0.5" "$H" sim --out "$T/x.bin" --motion stand --duration 2 --impact-ms 0.5
+expect_exit 0 "stand with --impact-ms 0.5" "$H" sim --out "$T/gait.bin" --motion stand --duration 2 --impact-ms 0.5
 expect_out "^sampling    200 Hz, internal x10 " "stand with --impact-ms: the internal rate left at its default"
 expect_err "warning: --impact-ms sets the landing of a stride; the motion 'stand' has no stride: ignored" \
     "stand with --impact-ms: said ignored"
 if grep -q "raised" "$T/err"; then fail "stand with --impact-ms: the rate raised"; else pass "stand with --impact-ms: no raise said"; fi
-expect_exit 0 "walk with --impact-ms 0.5" "$H" sim --out "$T/x.bin" --motion walk --duration 2 --impact-ms 0.5
+expect_exit 0 "walk with --impact-ms 0.5" "$H" sim --out "$T/gait.bin" --motion walk --duration 2 --impact-ms 0.5
 expect_out "^sampling    200 Hz, internal x50 " "walk with --impact-ms: the internal rate raised"
+# every sample dropped: exit 1 as convert's empty window, the log valid and
+# empty (it exited 0 without a word, and info refused the log)
+expect_exit 1 "dropout:prob=1" "$H" sim --out "$T/empty.bin" --duration 2 --effect dropout:prob=1
+expect_err "error: $T/empty.bin: no sample written: the dropout effect (prob 1) dropped every one of the 401 ticks (the log is valid and empty)" \
+    "dropout:prob=1: said"
+expect_out "^samples     0 written (401 ticks, 401 dropped, 0 duplicated)$" "dropout:prob=1: the summary printed"
+expect_exit 1 "dropout:prob=1: info of the log" "$H" info "$T/empty.bin"
+expect_err "error: $T/empty.bin: no samples$" "dropout:prob=1: a whole log without samples (as convert's empty window's)"
+expect_exit 1 "dropout:prob=1 to CSV" "$H" sim --out "$T/empty.csv" --duration 2 --effect dropout:prob=1
+[ "$(cat "$T/empty.csv")" = "t,ax,ay,az,gx,gy,gz" ] && pass "dropout:prob=1: the CSV is its header" ||
+    fail "dropout:prob=1: the CSV's content"
+expect_exit 2 "montecarlo dropout:prob=1" "$H" montecarlo --seeds 1 --duration 5 --effect dropout:prob=1
+expect_err "error: --effect dropout:prob=1 drops every sample: no run has one to navigate" "montecarlo dropout:prob=1: refused"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
@@ -394,8 +407,9 @@ set -- $SIMN
 if [ $# -eq 4 ] && [ "$1" -eq $(($2 - $3 + $4)) ] && grep -Eq "^drops +$3 " "$T/out" && grep -Eq "^duplicates +$4 " "$T/out"
 then pass "sim's written, dropped and duplicated counts agree with info's"; else fail "sim counts '$SIMN' vs info: $(grep -E '^(drops|duplicates)' "$T/out")"; fi
 # the summary's peaks are those of the log: every sample dropped, none
-# (the dropped samples are not counted)
-expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
+# (the dropped samples are not counted); the summary is printed before the
+# error of an empty log (exit 1)
+expect_exit 1 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
 expect_out_re "^samples     0 written" "no sample written"
 expect_out_re "^peaks       largest on one axis: f 0\.0 m/s\^2 \(0\.0 g\), w 0\.00 rad/s" "no peak from dropped samples"
 # the peaks are the largest reading of any one axis (what a sensor's range
