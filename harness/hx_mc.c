@@ -151,6 +151,45 @@ typedef struct {
  * rest is the variants' replays; about a fifth with one variant). */
 #define MC_SIM_SHARE 0.2
 
+/* A run's samples are held for the pairing with the truth, and every
+ * growth bin has its accumulators, its result and the caller's output of it
+ * (montecarlo's JSON, about 1.7 KB a bin and variant): refuse, before
+ * simulating anything, what cannot fit in this machine's memory. Standing
+ * 1e6 s at 200 Hz (38 GB of samples) would simulate for minutes and grow to
+ * about 16 GB before "out of memory"; an hour's walk at --bin 0.01 with
+ * --json peaked at 774 MB uncounted, 1e6 s at 240 GB after the runs. */
+static int mc_memory_check(const hx_mc_config_t *cfg, size_t nt, int nbins, int nvar, double duration_s, char *err,
+                           size_t err_size)
+{
+    const double per_bin = (double)sizeof(mc_slot_t) +
+                           nvar * ((double)sizeof(mc_acc_t) + (double)sizeof(hx_mc_bin_t) + cfg->out_bytes_per_bin);
+    const double ticks = (double)nt * (double)sizeof(mc_tick_t), bins = (double)nbins * per_bin;
+    const double rate = (double)cfg->sim.err.rate_hz;
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    double have = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
+    if (!((have > 0.0 && ticks + bins > have) || ticks + bins > (double)SIZE_MAX)) {
+        return 0;
+    }
+    if (ticks >= bins || !(have > ticks)) {
+        snprintf(err, err_size,
+                 "%.0f samples (%.6g s at %.6g Hz) are %.1f GB of samples and truth to hold (and %.1f GB of growth "
+                 "bins), more than this machine's %.1f GB of memory: shorten --duration or lower --rate",
+                 (double)nt, duration_s, rate, ticks / 1e9, bins / 1e9, have / 1e9);
+    } else {
+        /* the bins that fit beside the samples, and the --bin that makes
+         * no more of them */
+        const double fit = floor((have - ticks) / per_bin);
+        snprintf(err, err_size,
+                 "--bin %g s makes %d growth bins over %.6g s, %.1f GB to hold (%.0f bytes a bin for %d variant%s%s) "
+                 "beside %.1f GB of samples and truth, more than this machine's %.1f GB of memory: a larger --bin "
+                 "(%.3g s or more)",
+                 cfg->bin_s, nbins, duration_s, bins / 1e9, per_bin, nvar, nvar == 1 ? "" : "s",
+                 cfg->out_bytes_per_bin > 0.0 ? ", the JSON's included" : "", ticks / 1e9, have / 1e9,
+                 fit >= 1.0 ? duration_s / fit : duration_s);
+    }
+    return -1;
+}
+
 int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_result_t *res,
               hx_mc_progress_fn progress, void *progress_ctx, char *err, size_t err_size)
 {
@@ -177,6 +216,9 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
     res->nvar = nvar;
     res->bin_s = bin_s;
     res->duration_s = (double)(nt - 1) / rate;
+    if (mc_memory_check(cfg, nt, nbins, nvar, res->duration_s, err, err_size) != 0) {
+        goto out;
+    }
     slots = (mc_slot_t *)calloc((size_t)nbins, sizeof *slots);
     acc = (mc_acc_t *)calloc((size_t)nbins * (size_t)nvar, sizeof *acc);
     if (slots == NULL || acc == NULL) {
@@ -199,30 +241,13 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
             goto out;
         }
     }
-    {
-        /* a run's samples are held for the pairing with the truth: refuse,
-         * before simulating anything, a run that cannot fit in this
-         * machine's memory (standing 1e6 s at 200 Hz, 38 GB, would simulate
-         * for minutes and grow to about 16 GB before "out of memory"), then
-         * take the whole buffer at once */
-        double need = (double)nt * (double)sizeof(mc_tick_t);
-        long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-        double have = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
-        if ((have > 0.0 && need > have) || need > (double)SIZE_MAX) {
-            snprintf(err, err_size,
-                     "%.0f samples (%.6g s at %.6g Hz) are %.1f GB of samples and truth to hold, more than this "
-                     "machine's %.1f GB of memory: shorten --duration or lower --rate",
-                     (double)nt, res->duration_s, rate, need / 1e9, have / 1e9);
-            goto out;
-        }
-        buf.t = (mc_tick_t *)malloc((size_t)nt * sizeof *buf.t);
-        if (buf.t == NULL) {
-            snprintf(err, err_size, "out of memory: %.0f samples are %.1f GB of samples and truth to hold",
-                     (double)nt, need / 1e9);
-            goto out;
-        }
-        buf.cap = nt;
+    buf.t = (mc_tick_t *)malloc((size_t)nt * sizeof *buf.t);
+    if (buf.t == NULL) {
+        snprintf(err, err_size, "out of memory: %.0f samples are %.1f GB of samples and truth to hold", (double)nt,
+                 (double)nt * (double)sizeof(mc_tick_t) / 1e9);
+        goto out;
     }
+    buf.cap = nt;
     for (r = 0; r < cfg->runs; r++) {
         if (cfg->stop != NULL && *cfg->stop) {
             /* stopped (Ctrl-C): the runs done are the result */

@@ -106,6 +106,8 @@ typedef struct {
     hx_sim_config_t sim;   /**< motion and sensor model; sim.err.seed is the seed of run 0 */
     int runs;              /**< number of seeds (run r uses seed + r) */
     double bin_s;          /**< bin width of the growth curves, s (default 1) */
+    double out_bytes_per_bin; /**< memory the caller's outputs take per bin and variant (a JSON tree and its
+                                   text), bytes: counted with the engine's own in the memory check (0: none) */
     const volatile sig_atomic_t *stop; /**< nonzero (a signal's handler): no run started after it, the result holds
                                    the runs done (NULL: run them all) */
 } hx_mc_config_t;

@@ -292,6 +292,28 @@ timeout 20 "$H" montecarlo --seeds 1 --motion stand --duration 1e6 --rate 200 >"
 if [ "$rc" -eq 2 ]; then pass "a run larger than the memory (exit 2 at once)"; else fail "a run larger than the memory: exit $rc"; fi
 expect_err "GB of samples" "the size of the run is named"
 
+# the growth bins (and the JSON of each) are counted too: 1e5 s at --bin
+# 0.01 with --json and both variants is 1.9 GB of samples but 41 GB of bins
+# (an hour's walk at --bin 0.01 --json peaked at 774 MB uncounted); refused
+# at once naming a larger --bin. On a machine of more than 40 GB it would run.
+mem_kb=$(sed -n 's/^MemTotal: *\([0-9]*\) kB/\1/p' /proc/meminfo 2>/dev/null)
+if [ -n "$mem_kb" ] && [ "$mem_kb" -lt 40000000 ]; then
+    timeout -k 5 20 "$H" montecarlo --seeds 1 --motion stand --duration 1e5 --rate 100 --bin 0.01 --bias-model both \
+        --json "$T/bins.json" >"$T/out" 2>"$T/err"; rc=$?
+    [ "$rc" -eq 2 ] && pass "growth bins larger than the memory (exit 2 at once)" || fail "growth bins larger than the memory: exit $rc"
+    expect_err "error: --bin 0.01 s makes 10000000 growth bins over 100000 s, .* GB to hold (.* bytes a bin for 2 variants, the JSON's included) beside 1.9 GB of samples and truth, more than this machine's .* GB of memory: a larger --bin" \
+        "the bins' size and the remedy named"
+    [ ! -e "$T/bins.json" ] && pass "growth bins larger than the memory: no JSON" || fail "growth bins larger than the memory: a JSON written"
+else
+    echo "SKIP growth bins larger than the memory: this machine has ${mem_kb:-an unknown number of} kB"
+fi
+# a bin narrower than the sample interval holds no sample at times (its
+# summary row '-' without a word): refused, the interval named
+expect_exit 2 "--bin under the sample interval" "$H" montecarlo --rate 20 --bin 0.01 --seeds 1 --duration 8
+expect_err "error: --bin 0.01 s is shorter than the sample interval (0.05 s at 20 Hz): bins without a sample; --bin 0.05 or more" \
+    "--bin under the sample interval: the interval named"
+expect_exit 0 "--bin at the sample interval" "$H" montecarlo --rate 20 --bin 0.05 --seeds 1 --duration 8 --quiet
+
 # runs that agree to the last bit (no sensor error): the one-pass
 # variance, sum of squares less n mean^2, comes out a rounding below 0 and its
 # square root NaN, so 3 runs would read "no interval: no run"; a two-pass
