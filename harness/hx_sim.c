@@ -567,15 +567,16 @@ void hx_sim_warn_cut(const char *cmd, const hx_motion_t *m, const char *name, do
     }
 }
 
-/* whether the motion of --motion and --duration takes a stride (built and
- * freed here: only asked for an --impact-ms that would raise the internal
- * rate); a script that cannot be built counts as striding, its error said
+/* whether the motion of --motion and --duration takes a stride (walk: a
+ * walking one), built with cfg and freed here: only asked for an
+ * --impact-ms that would raise the internal rate or a walking gait out of
+ * range; a script that cannot be built counts as striding, its error said
  * where the command builds it */
-static int motion_has_strides(const hx_sim_setup_t *s)
+static int motion_has_strides(const hx_sim_setup_t *s, const hx_motion_config_t *cfg, int walk)
 {
     char err[HX_ERR_SIZE];
-    hx_motion_t *m = hx_motion_create(&s->motion_cfg, s->motion_name, s->duration_s, err, sizeof err);
-    int n = m != NULL ? hx_motion_strides(m) : 1;
+    hx_motion_t *m = hx_motion_create(cfg, s->motion_name, s->duration_s, err, sizeof err);
+    int n = m != NULL ? (walk ? hx_motion_walk_strides(m) : hx_motion_strides(m)) : 1;
     hx_motion_free(m);
     return n > 0;
 }
@@ -669,6 +670,16 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         /* the derived figure keeps the range of its own option (--speed 10
          * --cadence 20 would walk 50 m strides, --speed 5 --stride 0.5 be
          * refused as "gait fractions leave no time to swing") */
+        if ((w->cadence_spm < 20.0 || w->cadence_spm > 300.0 || w->stride_m < 0.05 || w->stride_m > 5.0)) {
+            /* a motion without a walking stride ignores the gait (said by
+             * hx_sim_warn_unused): not refused for a stride it never takes
+             * (run --speed 5 was "a stride of 5.455 m, outside [0.05, 5]") */
+            hx_motion_config_t trial = s->motion_cfg;
+            trial.walk = hx_motion_config_default().walk;
+            if (!motion_has_strides(s, &trial, 1)) {
+                *w = trial.walk;
+            }
+        }
         if (w->cadence_spm < 20.0 || w->cadence_spm > 300.0) {
             hx_error(cmd, "--speed %g with a stride of %g m makes a cadence of %.4g steps/min, outside [20, 300]", sp,
                      w->stride_m, w->cadence_spm);
@@ -842,7 +853,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         for (i = 0; i < 5; i++) {
             need = gs[i]->impact_s > 0.0 && 5.0 / gs[i]->impact_s > need ? 5.0 / gs[i]->impact_s : need;
         }
-        if (ceil(need / rate - 1e-9) > (double)s->err.oversample && !motion_has_strides(s)) {
+        if (ceil(need / rate - 1e-9) > (double)s->err.oversample && !motion_has_strides(s, &s->motion_cfg, 0)) {
             /* no landing to resolve: not raised for an --impact-ms that
              * has none to act on (stand at 0.5 ms ran at 10 kHz, 5 times
              * as long; hx_sim_warn_unused says it is ignored) */

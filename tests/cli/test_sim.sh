@@ -41,6 +41,14 @@ expect_err "warning: --speed, --cadence set the walking gait; the motion 'run' h
 expect_exit 0 "stand with --stride" "$H" sim --out "$T/gait.bin" --motion stand --duration 2 --stride 1
 expect_err "warning: --stride sets the walking gait; the motion 'stand' has no walking stride (no stride at all): ignored" \
     "stand with --stride: said ignored"
+# a gait out of range that the motion never walks: said ignored, not refused
+# ("--speed 5 at 110 steps/min makes a stride of 5.455 m, outside [0.05, 5]")
+expect_exit 0 "run with --speed 5 alone" "$H" sim --out "$T/gait5.bin" --motion run --duration 5 --speed 5
+expect_err "warning: --speed sets the walking gait; the motion 'run' has no walking stride" "run with --speed 5: said ignored"
+expect_exit 0 "run without --speed" "$H" sim --out "$T/gait0.bin" --motion run --duration 5
+cmp -s "$T/gait5.bin" "$T/gait0.bin" && pass "run with --speed 5: the log of the run without it" || fail "run with --speed 5 changed the log"
+expect_exit 2 "walk with --speed 5 alone: the stride out of range" "$H" sim --out "$T/gait.bin" --motion walk --duration 5 --speed 5
+expect_err "makes a stride of 5.455 m, outside \[0.05, 5\]" "walk with --speed 5: refused"
 expect_exit 0 "walk with --speed" "$H" sim --out "$T/gait.bin" --motion walk --duration 20 --speed 1.5
 if grep -q "ignored" "$T/err"; then fail "walk with --speed: warned"; else pass "walk with --speed: no warning"; fi
 expect_exit 0 "montecarlo: run with --speed" "$H" montecarlo --motion run --duration 8 --seeds 1 --speed 2 --quiet
