@@ -179,6 +179,7 @@ static void test_isr_to_frames(void **state)
     cfg.sample_every = 1;
     cfg.status_every = 100;
     cfg.sensor = "test-board";
+    cfg.sample_flags = FNAV_SAMPLE_HAS_SEQ; /* the test board's samples carry its counter */
     assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
     assert_int_equal(fnav_cm_app_announce(&app), FNAV_OK);
     for (i = 0; i < 1000; i++) {
@@ -371,6 +372,45 @@ static void test_sample_every_info(void **state)
     assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], 50);
 }
 
+/* The INFO frame says what the board's samples carry, as the board
+ * configured it (sample_flags): `harness live` takes the recording's
+ * header from INFO, so a clear temperature bit discarded every temperature
+ * the SAMPLE frames carried, and a set counter bit made a board without a
+ * sensor counter report 0 counter drops as if it counted them (the
+ * firmware audit: INFO flags 0x5 whatever the board). */
+static void test_info_sample_flags(void **state)
+{
+    static const uint32_t flags[4] = { 0u, FNAV_SAMPLE_HAS_TEMP, FNAV_SAMPLE_HAS_SEQ,
+                                       FNAV_SAMPLE_HAS_TEMP | FNAV_SAMPLE_HAS_SEQ };
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    int k, every;
+    (void)state;
+    for (every = 1; every <= 2; every++) {
+        for (k = 0; k < 4; k++) {
+            fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+            const uint32_t want_seq = (every == 1 && (flags[k] & FNAV_SAMPLE_HAS_SEQ)) ? FNAV_WIRE_INFO_SEQ : 0u;
+            const uint32_t want_temp = (flags[k] & FNAV_SAMPLE_HAS_TEMP) ? FNAV_WIRE_INFO_TEMP : 0u;
+            reset_board();
+            cfg.sample_every = (uint32_t)every;
+            cfg.sample_flags = flags[k];
+            assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+            assert_int_equal(fnav_cm_app_announce(&app), FNAV_OK);
+            receive(&rx);
+            assert_int_equal(rx.by_type[FNAV_WIRE_INFO], 1);
+            assert_int_equal(rx.info.flags, FNAV_WIRE_INFO_RATE_NOMINAL | want_seq | want_temp);
+        }
+    }
+    /* the default: a board that has said nothing claims neither */
+    assert_int_equal(fnav_cm_app_config_default.sample_flags, 0u);
+    /* a bit the INFO frame cannot carry is a configuration error */
+    {
+        fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+        cfg.sample_flags = 0x4u;
+        assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
+    }
+}
+
 /* A main loop that falls behind: the ring keeps the oldest samples, counts
  * the rest as overruns, and STATUS tells the receiver. */
 static void test_ring_overrun(void **state)
@@ -480,6 +520,7 @@ int main(void)
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_isr_to_frames),
         cmocka_unit_test(test_sample_every_info),
+        cmocka_unit_test(test_info_sample_flags),
         cmocka_unit_test(test_every_frame_is_output),
         cmocka_unit_test(test_events_of_unsent_frames),
         cmocka_unit_test(test_ring_overrun),

@@ -11,6 +11,7 @@ const fnav_cm_app_config_t fnav_cm_app_config_default = {
     0u,            /* sample_every */
     400u,          /* status_every: about once a second */
     "footnav-fw",  /* sensor */
+    FNAV_CM_SAMPLE_FLAGS, /* sample_flags: what the board's samples carry (0 by default) */
 };
 
 fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *cfg)
@@ -20,7 +21,7 @@ fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *c
         return FNAV_E_ARG;
     }
     if (!(cfg->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(cfg->rate_hz) || !(cfg->nav_rate_hz >= FNAV_R(0.0)) ||
-        !fnav_isfinite(cfg->nav_rate_hz)) {
+        !fnav_isfinite(cfg->nav_rate_hz) || (cfg->sample_flags & ~(FNAV_SAMPLE_HAS_TEMP | FNAV_SAMPLE_HAS_SEQ)) != 0u) {
         return FNAV_E_CONFIG;
     }
     app->cfg = *cfg;
@@ -44,10 +45,14 @@ fnav_status_t fnav_cm_app_announce(fnav_cm_app_t *app)
     size_t i;
     /* the SAMPLE stream's own rate and counter: every N-th sample runs at
      * rate / N and its seq steps by N, which a receiver must not take for
-     * N - 1 lost samples each time (1,999 "drops" in 4,000 at N = 2) */
+     * N - 1 lost samples each time (1,999 "drops" in 4,000 at N = 2); the
+     * temperature and the counter only when the board's samples carry them
+     * (sample_flags) */
     const uint32_t every = app->cfg.sample_every > 1u ? app->cfg.sample_every : 1u;
+    const uint32_t has = app->cfg.sample_flags;
     info.rate_hz = (double)(app->cfg.rate_hz / (fnav_real_t)every);
-    info.flags = FNAV_WIRE_INFO_RATE_NOMINAL | (every == 1u ? FNAV_WIRE_INFO_SEQ : 0u);
+    info.flags = FNAV_WIRE_INFO_RATE_NOMINAL | ((has & FNAV_SAMPLE_HAS_TEMP) ? FNAV_WIRE_INFO_TEMP : 0u) |
+                 ((every == 1u && (has & FNAV_SAMPLE_HAS_SEQ)) ? FNAV_WIRE_INFO_SEQ : 0u);
     for (i = 0; i + 1u < sizeof info.sensor && name[i] != '\0'; i++) {
         info.sensor[i] = name[i];
     }

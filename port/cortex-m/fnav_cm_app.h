@@ -27,6 +27,15 @@ typedef struct {
     uint32_t sample_every;   /**< send every N-th raw sample as a SAMPLE frame (0: none; default 0) */
     uint32_t status_every;   /**< send a STATUS frame every N samples (0: none; default 400) */
     const char *sensor;      /**< sensor name for the INFO frame (default "footnav-fw") */
+    uint32_t sample_flags;   /**< what every sample of the board's fnav_cm_imu_read carries, for the INFO
+                                  frame: FNAV_SAMPLE_HAS_TEMP (a temperature: INFO bit
+                                  FNAV_WIRE_INFO_TEMP) and FNAV_SAMPLE_HAS_SEQ (the sensor's own sample
+                                  counter: FNAV_WIRE_INFO_SEQ, sent only with sample_every 1). Default
+                                  FNAV_CM_SAMPLE_FLAGS (fnav_cm_config.h), 0: neither, as the stub IMU.
+                                  A receiver records what INFO says (`harness live` takes its recording's
+                                  header from it): a clear TEMP bit discards every temperature, a set SEQ
+                                  bit counts "drops" of a counter the board does not have. Other bits:
+                                  FNAV_E_CONFIG */
 } fnav_cm_app_config_t;
 
 /** Defaults (above). */

@@ -47,6 +47,15 @@
 #define FNAV_CM_WELCH_CHANNELS 3
 #endif
 
+/** What every sample of the board's fnav_cm_imu_read() carries
+ *  (FNAV_SAMPLE_HAS_TEMP 0x1, FNAV_SAMPLE_HAS_SEQ 0x2): the default of
+ *  fnav_cm_app_config_t.sample_flags, which the INFO frame announces
+ *  (the reference main() uses the default configuration). 0 (default):
+ *  neither, as the stub IMU. */
+#ifndef FNAV_CM_SAMPLE_FLAGS
+#define FNAV_CM_SAMPLE_FLAGS 0u
+#endif
+
 /** Exception number offset of the sample-ready interrupt: the handler
  *  FNAV_CM_Sample_IRQHandler sits at external interrupt FNAV_CM_SAMPLE_IRQN
  *  of the vector table (e.g. the EXTI line of the IMU's data-ready pin). */
