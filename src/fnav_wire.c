@@ -347,7 +347,12 @@ fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const uint8_t *in, size_t
             int klen = known_len(d->buf[2]);
             size_t total = FNAV_WIRE_FRAME_SIZE((size_t)d->buf[3]);
             if (klen >= 0 && klen != (int)d->buf[3]) {
-                reject(d, (uint16_t)FNAV_WIRE_HEADER_SIZE);
+                /* the frame its type or its length byte says, whichever was
+                 * hit: a false sync word inside either is part of this one
+                 * damaged frame, not a second (the header alone as extent
+                 * counted one inside the payload again) */
+                const size_t known = FNAV_WIRE_FRAME_SIZE((size_t)klen);
+                reject(d, (uint16_t)(known > total ? known : total));
                 continue;
             }
             want = total;

@@ -613,6 +613,65 @@ static void test_known_type_wrong_length(void **state)
     assert_int_equal(d.stats.unknown, 0);
 }
 
+/* A known type announced with the wrong length is one damaged frame over
+ * the extent of the frame it can be. A SAMPLE whose length byte was hit
+ * (41 -> 40) holds a sync word and a false END header (payload zeros, CRC
+ * broken) 26 bytes in, then comes a valid END: the candidate was rejected
+ * with the 6 bytes of its header as extent, so the false header counted
+ * as a second corrupt frame (the firmware audit's one.bin: bad 2). A NAV
+ * frame (53 bytes of payload) whose type byte was hit reads as a SAMPLE
+ * announcing 53: its false header 52 bytes in lies past a SAMPLE's 51
+ * bytes, so the extent is the longer of the two frames it can be. */
+static void test_wrong_length_extent(void **state)
+{
+    uint8_t buf[256], pay[FNAV_WIRE_NAV_LEN];
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t k, used, chunk;
+    int c;
+    (void)state;
+    for (c = 0; c < 2; c++) {
+        const size_t len = c == 0 ? FNAV_WIRE_SAMPLE_LEN : FNAV_WIRE_NAV_LEN;
+        const size_t at = c == 0 ? 20u : 46u; /* the false header's first byte in the payload */
+        memset(pay, 0, sizeof pay);
+        pay[at] = FNAV_WIRE_SYNC0;
+        pay[at + 1u] = FNAV_WIRE_SYNC1;
+        pay[at + 2u] = FNAV_WIRE_END;
+        pay[at + 3u] = (uint8_t)FNAV_WIRE_END_LEN;
+        k = fnav_wire_encode(buf, sizeof buf, c == 0 ? FNAV_WIRE_SAMPLE : FNAV_WIRE_NAV, 11u, pay, len);
+        assert_int_equal(k, FNAV_WIRE_FRAME_SIZE(len));
+        if (c == 0) {
+            buf[3] = (uint8_t)(FNAV_WIRE_SAMPLE_LEN - 1u); /* the length byte hit */
+        } else {
+            buf[2] = FNAV_WIRE_SAMPLE; /* the type byte hit */
+        }
+        k += fnav_wire_encode_end(buf + k, sizeof buf - k, 12u, 0u);
+        for (chunk = 1; chunk <= k; chunk++) {
+            size_t pos = 0;
+            int got = 0;
+            fnav_wire_decoder_init(&d);
+            while (pos < k) {
+                const size_t n = (k - pos < chunk) ? k - pos : chunk;
+                size_t off = 0;
+                for (;;) {
+                    const fnav_status_t st = fnav_wire_decode(&d, buf + pos + off, n - off, &used, &f);
+                    off += used;
+                    if (st != FNAV_OK) {
+                        break;
+                    }
+                    assert_int_equal(f.type, FNAV_WIRE_END);
+                    got++;
+                }
+                pos += n;
+            }
+            assert_int_equal(got, 1);
+            assert_int_equal(d.stats.frames, 1);
+            assert_int_equal(d.stats.bad_frames, 1);
+            assert_int_equal(d.stats.skipped_bytes, FNAV_WIRE_FRAME_SIZE(len));
+        }
+    }
+}
+
 /* One damaged frame counts once (step 4): a frame of an unknown type whose
  * payload holds a sync word and a false header (a NAV type announcing 0
  * bytes), its CRC broken, then an END frame. The false header starts
@@ -932,6 +991,7 @@ int main(void)
         cmocka_unit_test(test_seq_gap_boundary),
         cmocka_unit_test(test_parse_wrong_length),
         cmocka_unit_test(test_known_type_wrong_length),
+        cmocka_unit_test(test_wrong_length_extent),
         cmocka_unit_test(test_nested_candidate_counts_once),
         cmocka_unit_test(test_garbage_fuzz),
         cmocka_unit_test(test_flush_end_of_stream),
