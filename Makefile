@@ -331,6 +331,7 @@ firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
 	@$(PYTHON) port/cortex-m/tools/bench_compare.py $(ARM_BUILD)/bench.txt $(ARM_BUILD)/bench-host.txt \
 	  --replay $(ARM_BUILD)/bench-replay.csv
 	@sh tests/m4/ticks.sh
+	@sh tests/m4/wait.sh
 	@sh tests/m4/exit.sh
 
 # ---------------------------------------------------------------- bench

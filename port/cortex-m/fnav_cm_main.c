@@ -33,6 +33,8 @@ int main(void)
     (void)fnav_cm_app_announce(&g_app);
     for (;;) {
         (void)fnav_cm_app_poll(&g_app);
-        fnav_cm_idle();
+        /* sleeps unless a sample came after the last pop (checked with
+         * interrupts masked: a poll then a bare WFI slept past it) */
+        fnav_cm_port_wait(&g_app.port_ctx);
     }
 }

@@ -121,6 +121,27 @@ FNAV_CM_WEAK int fnav_cm_out_write(const void *bytes, uint32_t n)
     return 0;
 }
 
+void fnav_cm_port_wait(fnav_cm_port_ctx_t *ctx)
+{
+    /* masked, a push cannot come between the check and the sleep; one made
+     * pending meanwhile still wakes WFI (ARMv7-M ARM B1.5.19), and its
+     * handler runs at CPSIE. DSB: the sleep after every store is done
+     * (Arm's WFI idiom); ISB: the handler runs before the next instruction. */
+#if defined(__arm__)
+    __asm volatile("cpsid i" ::: "memory");
+#endif
+    if (ctx->ring.head == ctx->ring.tail) {
+#if defined(__arm__)
+        __asm volatile("dsb" ::: "memory");
+#endif
+        fnav_cm_idle();
+    }
+#if defined(__arm__)
+    __asm volatile("cpsie i" ::: "memory");
+    __asm volatile("isb" ::: "memory");
+#endif
+}
+
 /* ---- frame output ---- */
 
 static fnav_status_t send(fnav_cm_port_ctx_t *c, size_t n)

@@ -63,6 +63,15 @@ void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx);
  *  calls fnav_cm_sample_isr). */
 uint32_t fnav_cm_sample_isr_fifo(fnav_cm_port_ctx_t *ctx, uint32_t max);
 
+/** The main loop's sleep, after fnav_cm_app_poll() found the ring empty:
+ *  calls fnav_cm_idle() unless a sample is waiting, and on ARM checks the
+ *  ring with interrupts masked (CPSID i ... CPSIE i, ISB), so that a sample
+ *  pushed after the loop's last pop cannot be left in the ring while the
+ *  core sleeps until the next interrupt. fnav_cm_idle() is then called with
+ *  PRIMASK set: WFI wakes on an interrupt made pending under it (ARMv7-M
+ *  ARM B1.5.19), which runs once the mask is cleared here. Main loop only. */
+void fnav_cm_port_wait(fnav_cm_port_ctx_t *ctx);
+
 /** Send a SAMPLE frame (raw stream). Main loop only. @return FNAV_OK or FNAV_E_IO. */
 fnav_status_t fnav_cm_port_send_sample(fnav_cm_port_ctx_t *ctx, const fnav_sample_t *s);
 /** Send a STATUS frame. Main loop only. */
@@ -101,7 +110,10 @@ int64_t fnav_cm_ticks_ns(void);
  *  buffer or a FIFO) or finish sending before it returns. A DMA reading
  *  these bytes after the return would send a mix of two frames. */
 int fnav_cm_out_write(const void *bytes, uint32_t n);
-/** Sleep until the next interrupt. */
+/** Sleep until the next interrupt. Called by fnav_cm_port_wait() with
+ *  interrupts masked (PRIMASK): it must return once an interrupt is
+ *  pending without waiting for its handler to run (WFI does; a wait on a
+ *  flag the handler sets would never end). */
 void fnav_cm_idle(void);
 
 #endif /* FNAV_PORT_CORTEXM_H */
