@@ -452,35 +452,53 @@ static void test_cm_ns_scale(void **state)
 }
 
 /* fnav_cm_systick_ns() (fnav_cm_time.h), the SysTick stamp's combination
- * of the millisecond count, the counter, the pending bit and the counter
+ * of the periods' count, the counter, the pending bit and the counter
  * read after it, against the time of the read, for every order of a wrap
- * and the reads: a SysTick counting hz with reload R = hz / 1000 - 1 (hz a
- * multiple of 1000: a millisecond is R + 1 ticks) wraps at ticks
- * W = n (R + 1), where it reads R and sets the pending bit. An interrupt
- * that SysTick cannot pre-empt (entered at tick th) reads the millisecond
- * count (the wraps at or before th, whose interrupt ran), the counter at
+ * and the reads: a SysTick counting hz with reload R = hz / 1000 - 1 (a
+ * period is R + 1 ticks: 1 ms when 1000 divides hz, not at 14.7456 MHz
+ * and 2^24 Hz) wraps at ticks W = n (R + 1), where it reads R and sets the
+ * pending bit. An interrupt that SysTick cannot pre-empt (entered at tick
+ * th) reads the count of periods (the wraps at or before th, whose
+ * interrupt ran), the counter at
  * t1, the pending bit at t2 (set by a wrap in (th, t2]) and the counter at
  * t3, th <= t1 <= t2 <= t3, all within 8 ticks either side of a wrap (one
  * wrap at most, as the function requires). The stamp is the time of the
  * counter read that counts: t3 when the bit is set, else t1, in ns,
  * floor(t 1e9 / hz). QEMU cannot check this (its pending bit comes late:
  * docs/firmware.md, "SysTick time stamps"). */
+/* The count of @p w SysTick periods of p clocks at hz as the time base
+ * keeps it: ns + rem / hz = w p 1e9 / hz (rem < hz), computed directly. */
+static void systick_count_at(uint32_t hz, uint64_t p, uint64_t w, uint64_t *ns, uint32_t *rem)
+{
+    const uint64_t x = w * p, a = x / hz, b = x % hz; /* w p = a hz + b */
+    *ns = a * 1000000000u + b * 1000000000u / hz;
+    *rem = (uint32_t)(b * 1000000000u % hz);
+}
+
+/* floor(t 1e9 / hz) for t up to 2^64 clocks */
+static int64_t clocks_ns(uint32_t hz, uint64_t t)
+{
+    return (int64_t)((t / hz) * 1000000000u + (t % hz) * 1000000000u / hz);
+}
+
 static int64_t systick_model_ns(uint32_t hz, uint64_t th, uint64_t t1, uint64_t t2, uint64_t t3)
 {
     const uint64_t p = hz / 1000u; /* R + 1 */
-    fnav_cm_ns_scale_t sc;
-    const uint64_t ms = th / p;               /* wraps at or before th */
+    fnav_cm_systick_scale_t sc;
     const int pending = t2 / p > th / p;      /* a wrap in (th, t2] */
     const uint32_t cvr = (uint32_t)(p - 1u - t1 % p), cvr_after = (uint32_t)(p - 1u - t3 % p);
-    fnav_cm_ns_scale_init(&sc, hz, (uint32_t)(p - 1u));
-    return fnav_cm_systick_ns(&sc, ms, cvr, pending, cvr_after);
+    uint64_t ns;
+    uint32_t rem;
+    systick_count_at(hz, p, th / p, &ns, &rem); /* the wraps at or before th */
+    fnav_cm_systick_scale_init(&sc, hz, (uint32_t)(p - 1u));
+    return fnav_cm_systick_ns(&sc, ns, rem, cvr, pending, cvr_after);
 }
 
 static void test_cm_systick_ns(void **state)
 {
     /* the multiply-shift (25 MHz, 168 MHz, 16,384,000 Hz) and the division
      * (the first whole-kHz clock from 1,001 kHz the bound does not cover) */
-    uint32_t hz[4] = {25000000u, 168000000u, 16384000u, 0u};
+    uint32_t hz[6] = {25000000u, 168000000u, 16384000u, 0u, 14745600u, 16777216u};
     const uint64_t nwrap[] = {1u, 2u, 1000u, UINT64_C(5000000000)}; /* the last: 58 days, ms over 2^32 */
     size_t i, w;
     uint32_t f, pend_seen[2] = {0u, 0u};
@@ -493,11 +511,11 @@ static void test_cm_systick_ns(void **state)
         }
     }
     assert_true(hz[3] != 0u);
-    for (i = 0; i < 4u; i++) {
+    for (i = 0; i < sizeof hz / sizeof hz[0]; i++) {
         const uint64_t p = hz[i] / 1000u;
         fnav_cm_ns_scale_t sc;
         fnav_cm_ns_scale_init(&sc, hz[i], (uint32_t)(p - 1u));
-        assert_int_equal(sc.exact, i < 3u ? 1u : 0u);
+        assert_int_equal(sc.exact, i != 3u ? 1u : 0u);
         for (w = 0; w < sizeof nwrap / sizeof nwrap[0]; w++) {
             const uint64_t lo = nwrap[w] * p - 8u, hi = nwrap[w] * p + 8u;
             uint64_t th, t1, t2, t3;
@@ -507,8 +525,7 @@ static void test_cm_systick_ns(void **state)
                         for (t3 = t2; t3 <= hi; t3++) {
                             const int pending = t2 / p > th / p;
                             const uint64_t t = pending ? t3 : t1;
-                            const int64_t want =
-                                (int64_t)(t / p) * 1000000 + (int64_t)(t % p) * 1000000000 / (int64_t)hz[i];
+                            const int64_t want = clocks_ns(hz[i], t);
                             const int64_t got = systick_model_ns(hz[i], th, t1, t2, t3);
                             pend_seen[pending]++;
                             if (got != want) {
@@ -526,9 +543,48 @@ static void test_cm_systick_ns(void **state)
     assert_true(pend_seen[0] > 0u && pend_seen[1] > 0u);
     {
         /* not started: 0 */
-        fnav_cm_ns_scale_t sc;
-        fnav_cm_ns_scale_init(&sc, 0u, 0u);
-        assert_true(fnav_cm_systick_ns(&sc, 5u, 3u, 1, 2u) == 0);
+        fnav_cm_systick_scale_t sc;
+        fnav_cm_systick_scale_init(&sc, 0u, 0u);
+        assert_true(fnav_cm_systick_ns(&sc, 5u, 1u, 3u, 1, 2u) == 0);
+    }
+}
+
+/* The SysTick time base over an hour of periods, each counted as its
+ * handler counts it (fnav_cm_systick_add), against the time of the core
+ * clocks: exact at every clock. A period is floor(hz / 1000) clocks, 1 ms
+ * only when 1000 divides hz; counted as 1 ms, the stamp ran 40.7 ppm fast
+ * at 14.7456 MHz (146 ms an hour, 3.5 s a day) and 12.9 ppm at 2^24 Hz (the
+ * firmware audit), while fnav_cm_time.h and docs/firmware.md called those
+ * clocks exact. */
+static void test_cm_systick_long_run(void **state)
+{
+    static const uint32_t hz[] = {14745600u, 16777216u, 11059200u, 168000000u, 25000000u, 1000066u, 25000001u};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof hz / sizeof hz[0]; i++) {
+        const uint32_t p = hz[i] / 1000u, reload = p - 1u;
+        const uint64_t w_end = UINT64_C(3600) * hz[i] / p; /* an hour of core clocks, in periods */
+        fnav_cm_systick_scale_t sc;
+        uint64_t w, ns = 0u, ns_d;
+        uint32_t rem = 0u, rem_d, c;
+        fnav_cm_systick_scale_init(&sc, hz[i], reload);
+        assert_int_equal(sc.hz, hz[i]);
+        for (w = 0; w < w_end; w++) {
+            fnav_cm_systick_add(&sc, &ns, &rem);
+        }
+        for (c = 0; c <= reload; c += (c < 40u || c + 40u > reload) ? 1u : 997u) {
+            const int64_t want = clocks_ns(hz[i], w_end * p + c);
+            const int64_t got = fnav_cm_systick_ns(&sc, ns, rem, reload - c, 0, 0u);
+            if (got != want) {
+                fail_msg("hz %u after %llu periods, counter %u: %lld ns, the clocks' %lld (%+.2f ppm)", (unsigned)hz[i],
+                         (unsigned long long)w_end, (unsigned)c, (long long)got, (long long)want,
+                         ((double)got / (double)want - 1.0) * 1e6);
+            }
+        }
+        systick_count_at(hz[i], p, w_end, &ns_d, &rem_d);
+        assert_true(ns == ns_d && rem == rem_d);
+        /* a wrap pending: one period more, then the counter read after it */
+        assert_true(fnav_cm_systick_ns(&sc, ns, rem, 0u, 1, reload - 5u) == clocks_ns(hz[i], (w_end + 1u) * p + 5u));
     }
 }
 
@@ -623,6 +679,7 @@ int main(void)
         cmocka_unit_test(test_cm_time_edges),
         cmocka_unit_test(test_cm_ns_scale),
         cmocka_unit_test(test_cm_systick_ns),
+        cmocka_unit_test(test_cm_systick_long_run),
         cmocka_unit_test(test_cm_stamps_through_nav),
     };
     return cmocka_run_group_tests_name("port", tests, NULL, NULL);

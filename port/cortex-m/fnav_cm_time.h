@@ -106,11 +106,11 @@ static inline int64_t fnav_cm_batch_stamp(int64_t t_prev_ns, int64_t t_irq_ns, u
 
 /** floor(c 1e9 / hz) for counter values c in [0, c_max], precomputed by
  *  fnav_cm_ns_scale_init(). 8 bytes (asserted below): the SysTick time base
- *  keeps it beside its 64-bit millisecond count, and the firmware's RAM
+ *  keeps it beside its count of periods, and the firmware's RAM
  *  budget counts on that size (docs/firmware.md, "Budget"). */
 typedef struct {
     uint32_t mul;            /**< exact: m = ceil(2^k 1e9 / hz); division: hz */
-    unsigned int c_max : 24; /**< exact: the largest counter value (SysTick: the reload value) */
+    unsigned int c_max : 24; /**< the largest counter value (SysTick: the reload value); 0 when over 24 bits */
     unsigned int shift : 7;  /**< exact: 32 - k */
     unsigned int exact : 1;  /**< 1: the multiply-shift, 0: the 64-bit division */
 } fnav_cm_ns_scale_t;
@@ -135,6 +135,9 @@ typedef char fnav_cm_ns_scale_size_check[sizeof(fnav_cm_ns_scale_t) == 8u ? 1 : 
  *  floor(c m / 2^k) = floor(c 2^(32 - k) m / 2^32) (< m < 2^32): a shift
  *  and the high word of one 32 x 32 -> 64 multiply (UMULL).
  *
+ *  This is the conversion within one SysTick period; the periods' own ns
+ *  (reload + 1 clocks each, not 1 ms unless 1000 divides hz) are counted
+ *  by fnav_cm_systick_add() below, so that the stamp is exact over any run.
  *  Exact for every clock that divides 1e9 (j = 0) and the usual MCU clocks
  *  (12, 16, 64, 80, 168, 180 MHz, 14.7456 MHz, 2^24 Hz: tests/test_port.c,
  *  test_cm_ns_scale; scripts/ns_scale_search.py). A clock the bound does
@@ -146,7 +149,7 @@ static inline void fnav_cm_ns_scale_init(fnav_cm_ns_scale_t *s, uint32_t hz, uin
 {
     uint32_t k = 33u, m = 0u;
     s->mul = hz; /* the division */
-    s->c_max = 0u;
+    s->c_max = c_max <= 0xffffffu ? c_max : 0u; /* the division keeps it for the SysTick stamp's reload */
     s->shift = 0u;
     s->exact = 0u;
     if (hz == 0u || c_max > 0xffffffu) {
@@ -198,35 +201,90 @@ static inline int64_t fnav_cm_ns_of_ticks(const fnav_cm_ns_scale_t *s, uint32_t 
     return s->mul == 0u ? 0 : (int64_t)((uint64_t)c * 1000000000u / s->mul); /* unsigned: no sign fix-up */
 }
 
+/** The SysTick time base's constants (fnav_cm_systick_scale_init()): one
+ *  period, p = reload + 1 core clocks, is tick_ns + tick_rem / hz ns. */
+typedef struct {
+    fnav_cm_ns_scale_t scale; /**< the counter within a period to ns; c_max: the reload */
+    uint32_t hz;              /**< core clock, Hz; 0: not started (every stamp 0) */
+    uint32_t tick_ns;         /**< floor(p 1e9 / hz) */
+    uint32_t tick_rem;        /**< p 1e9 mod hz */
+} fnav_cm_systick_scale_t;
+
+/** Set up @p s for a SysTick counting @p hz with reload @p reload (once, at
+ *  start: it divides). hz 0, a reload over 24 bits (SysTick's) or a period
+ *  of 2^32 - 1 ns or more: hz 0, the time base reads 0. */
+static inline void fnav_cm_systick_scale_init(fnav_cm_systick_scale_t *s, uint32_t hz, uint32_t reload)
+{
+    const uint64_t x = ((uint64_t)reload + 1u) * UINT64_C(1000000000);
+    fnav_cm_ns_scale_init(&s->scale, hz, reload);
+    s->hz = 0u;
+    s->tick_ns = 0u;
+    s->tick_rem = 0u;
+    if (hz == 0u || reload > 0xffffffu || x / hz >= UINT64_C(0xffffffff)) {
+        return;
+    }
+    s->hz = hz;
+    s->tick_ns = (uint32_t)(x / hz);
+    s->tick_rem = (uint32_t)(x % hz);
+}
+
+/** One period more on the count (@p ns, @p rem): ns + rem / hz is the
+ *  periods' time, exactly (rem < hz). SysTick_Handler's work; no division. */
+static inline void fnav_cm_systick_add(const fnav_cm_systick_scale_t *s, uint64_t *ns, uint32_t *rem)
+{
+    uint32_t add = s->tick_ns; /* under 2^32 - 1 (fnav_cm_systick_scale_init): add + 1 fits */
+    if (*rem >= s->hz - s->tick_rem) { /* rem + tick_rem >= hz, without the overflow */
+        *rem -= s->hz - s->tick_rem;
+        add++;
+    } else {
+        *rem += s->tick_rem;
+    }
+    *ns += add;
+}
+
 /** The SysTick time base's stamp in ns from one reading of its state
- *  (port/cortex-m/fnav_port_cortexm.c, fnav_cm_ticks_ns()): @p ms, the
- *  millisecond interrupts that have run; @p cvr, the counter (SYST_CVR)
- *  read after it; @p pending, ICSR.PENDSTSET read after that; @p cvr_after,
- *  the counter read after the pending bit. @p s is from
- *  fnav_cm_ns_scale_init(s, hz, hz / 1000 - 1) (the reload: c_max of an
- *  exact scale, else hz / 1000 - 1 from the division's hz); hz 0: 0.
+ *  (port/cortex-m/fnav_port_cortexm.c, fnav_cm_ticks_ns()): @p ns and @p
+ *  rem, the count of the periods whose interrupt has run (the time of W
+ *  periods of p = reload + 1 clocks is W p 1e9 / hz = ns + rem / hz ns, kept
+ *  by fnav_cm_systick_add()); @p cvr, the counter (SYST_CVR) read after it;
+ *  @p pending, ICSR.PENDSTSET read after that; @p cvr_after, the counter
+ *  read after the pending bit. @p s from fnav_cm_systick_scale_init(s, hz,
+ *  reload); hz 0: 0.
+ *
+ *  The stamp is floor(C 1e9 / hz) for the C = W p + (reload - cvr) core
+ *  clocks since the start, exactly, at any clock and over any run: the
+ *  count of periods carries its fraction of a ns (rem), so a clock that
+ *  1000 does not divide is not taken as 1 ms per period (at 14.7456 MHz the
+ *  period is 14,745 clocks, 999.96 us: the stamp ran 40.7 ppm fast until
+ *  2026-12-06). C 1e9 = (ns hz + rem) + (q hz + r) with q, r the quotient
+ *  and remainder of the counter's c 1e9 by hz: the stamp is ns + q, plus 1
+ *  when rem + r >= hz; r < hz needs only 32-bit products.
  *
  *  Pending set: the counter wrapped and its interrupt has not run (the
  *  caller is in an interrupt of the same or higher priority, or interrupts
  *  are masked). The wrap came before the pending bit was read, so @p
- *  cvr_after belongs to the next millisecond: ms + 1 and cvr_after (@p cvr
- *  may be from either side of the wrap). Pending clear: @p cvr (a wrap
- *  after the pending read shows only in @p cvr_after, which is not used).
- *  Two wraps before the interrupt runs (over 1 ms) cannot be told apart.
- *  Pure: tests/test_port.c, test_cm_systick_ns, checks every order of a
- *  wrap and the reads on the host. */
-static inline int64_t fnav_cm_systick_ns(const fnav_cm_ns_scale_t *s, uint64_t ms, uint32_t cvr, int pending,
-                                         uint32_t cvr_after)
+ *  cvr_after belongs to the next period: one period more and cvr_after
+ *  (@p cvr may be from either side of the wrap). Pending clear: @p cvr (a
+ *  wrap after the pending read shows only in @p cvr_after, which is not
+ *  used). Two wraps before the interrupt runs cannot be told apart.
+ *  Pure: tests/test_port.c, test_cm_systick_ns and test_cm_systick_long_run,
+ *  check every order of a wrap and the reads, and the stamp after an hour
+ *  of periods, on the host. */
+static inline int64_t fnav_cm_systick_ns(const fnav_cm_systick_scale_t *s, uint64_t ns, uint32_t rem, uint32_t cvr,
+                                         int pending, uint32_t cvr_after)
 {
-    const uint32_t reload = s->exact ? (uint32_t)s->c_max : s->mul / 1000u - 1u;
-    if (s->mul == 0u) {
+    uint32_t c, q, r;
+    if (s->hz == 0u) {
         return 0;
     }
     if (pending) {
-        ms++;
+        fnav_cm_systick_add(s, &ns, &rem);
         cvr = cvr_after;
     }
-    return (int64_t)ms * 1000000 + fnav_cm_ns_of_ticks(s, reload - cvr);
+    c = (uint32_t)s->scale.c_max - cvr; /* SysTick's counter never reads above its reload */
+    q = (uint32_t)fnav_cm_ns_of_ticks(&s->scale, c); /* under tick_ns + 1 */
+    r = c * 1000000000u - q * s->hz;                 /* mod 2^32: exact, as r < hz */
+    return (int64_t)(ns + q + (r >= s->hz - rem ? 1u : 0u));
 }
 
 #endif /* FNAV_CM_TIME_H */

@@ -30,18 +30,22 @@ uint32_t fnav_cm_sample_isr_fifo(fnav_cm_port_ctx_t *ctx, uint32_t max)
 #define SCB_ICSR (*(volatile uint32_t *)0xE000ED04u)
 #define ICSR_PENDSTSET (1u << 26) /* SysTick exception pending (ARMv7-M ARM, B3.2.4) */
 
-/* 1 ms interrupts since start: 64 bits (32 wrap after 49.7 days, and the
- * navigator then refuses every sample as going back in time) */
-static volatile uint64_t g_systick_ms;
-/* the multiply-shift of the core clocks counted within a millisecond to ns
- * and the reload (core clocks per ms - 1), or the core clock (fnav_cm_time.h) */
-static fnav_cm_ns_scale_t g_systick_scale;
+/* the time of the SysTick periods whose interrupt ran, in ns (64 bits: 32
+ * wrap after 4.3 s) and the fraction of a ns left, in 1/hz ns: a period is
+ * reload + 1 core clocks, 1 ms only when 1000 divides the clock, and
+ * counting it as 1 ms ran 40.7 ppm fast at 14.7456 MHz (fnav_cm_time.h) */
+static volatile uint64_t g_systick_ns;
+static volatile uint32_t g_systick_rem;
+/* the period's ns and its remainder, the multiply-shift of the core clocks
+ * counted within a period to ns and the reload (fnav_cm_time.h) */
+static fnav_cm_systick_scale_t g_systick_scale;
 
 void fnav_cm_systick_start(uint32_t core_hz)
 {
     const uint32_t reload = core_hz / 1000u - 1u;
-    fnav_cm_ns_scale_init(&g_systick_scale, core_hz, reload);
-    g_systick_ms = 0u;
+    fnav_cm_systick_scale_init(&g_systick_scale, core_hz, reload);
+    g_systick_ns = 0u;
+    g_systick_rem = 0u;
     SYST_RVR = reload;
     SYST_CVR = 0u;
     SYST_CSR = 0x7u; /* processor clock, interrupt, enable */
@@ -49,7 +53,11 @@ void fnav_cm_systick_start(uint32_t core_hz)
 
 void fnav_cm_systick_tick(void)
 {
-    g_systick_ms++;
+    uint64_t ns = g_systick_ns;
+    uint32_t rem = g_systick_rem;
+    fnav_cm_systick_add(&g_systick_scale, &ns, &rem);
+    g_systick_rem = rem;
+    g_systick_ns = ns; /* last: the reader's re-read compares it */
 }
 
 #if !defined(FNAV_CM_OWN_SYSTICK)
@@ -65,21 +73,22 @@ void SysTick_Handler(void)
 
 FNAV_CM_WEAK int64_t fnav_cm_ticks_ns(void)
 {
-    uint64_t ms;
-    uint32_t cvr, cvr_after;
+    uint64_t ns;
+    uint32_t rem, cvr, cvr_after;
     int pending;
-    if (g_systick_scale.mul == 0u) { /* not started (the division's hz, 0) */
+    if (g_systick_scale.hz == 0u) { /* not started */
         return 0;
     }
-    do { /* re-read if the millisecond interrupt ran in between */
-        ms = g_systick_ms;
+    do { /* re-read if the period's interrupt ran in between */
+        ns = g_systick_ns;
+        rem = g_systick_rem;
         cvr = SYST_CVR;
         pending = (SCB_ICSR & ICSR_PENDSTSET) != 0u;
         cvr_after = SYST_CVR;
-    } while (ms != g_systick_ms);
+    } while (ns != g_systick_ns);
     /* a pending wrap counted, the counter's ns without a 64-bit division
      * where the scale is exact (fnav_cm_time.h) */
-    return fnav_cm_systick_ns(&g_systick_scale, ms, cvr, pending, cvr_after);
+    return fnav_cm_systick_ns(&g_systick_scale, ns, rem, cvr, pending, cvr_after);
 }
 
 FNAV_CM_WEAK void fnav_cm_idle(void)

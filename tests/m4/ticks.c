@@ -17,7 +17,7 @@
  * boundary among them, and the cost of a stamp.
  * On a Cortex-M the wrap that makes SysTick pending is visible in ICSR at
  * once, and fnav_cm_ticks_ns() counts it (in thread mode the exception is
- * taken before the millisecond count is read again); QEMU sets the pending
+ * taken before the count of periods is read again); QEMU sets the pending
  * bit only when it next services its timers, while its counter already
  * reads the reloaded value, so in the emulator a reading in that window
  * goes back by up to 1 ms, in the interrupt and in thread mode alike. So
