@@ -223,15 +223,25 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 # Budget (issue 7): whole image with every estimator.
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
-# Stack reserved at the bottom of RAM, below .data and .bss (must hold the worst case of the stack report, which
-# assumes one interrupt level). 1592: the report's 1,476 plus SysTick_Handler
-# (8) with a second FPU exception frame (104) for a board whose SysTick preempts
-# the sample interrupt, 1,588, rounded up to 8 bytes (AAPCS); docs/firmware.md.
-FW_STACK_SIZE   ?= 1592
+# Stack reserved at the bottom of RAM, below .data and .bss: it must hold the
+# stack report's worst case, which nests the interrupt levels of
+# FW_STACK_PRIORITIES (HANDLER=LEVEL; unnamed handlers at level 0) and counts
+# the board's fnav_cm_imu_read as at least FW_IMU_READ_ROOM bytes (the image
+# holds a stub of 0). The default: a board whose SysTick preempts the
+# sample-ready interrupt (a priority many vendor HALs give it) and reads its
+# IMU in 56 bytes (an SPI burst into a local buffer, scaled: the firmware
+# audit's board): thread 1,296 + 104 + 112 + 104 + SysTick 20 = 1,636,
+# rounded up to 8 (AAPCS). It fills the RAM budget: docs/firmware.md, "The
+# stack reserve". FW_BOARD_SRC: a board's own files, linked into the image
+# and measured by the report (`make firmware FW_BOARD_SRC=board.c`).
+FW_STACK_SIZE   ?= 1640
+FW_STACK_PRIORITIES ?= SysTick_Handler=1
+FW_IMU_READ_ROOM ?= 56
+FW_BOARD_SRC    ?=
 
 FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
              port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c
-FW_OBJ    := $(patsubst %.c,$(ARM_BUILD)/obj/%.o,$(FW_COMMON) port/cortex-m/fnav_cm_main.c)
+FW_OBJ    := $(patsubst %.c,$(ARM_BUILD)/obj/%.o,$(FW_COMMON) port/cortex-m/fnav_cm_main.c $(FW_BOARD_SRC))
 FW_ELF    := $(ARM_BUILD)/footnav-fw.elf
 # The benchmark image: profiling marks on, semihosting, a generated slice.
 FW_SLICE_LOG   ?= vectors/walk.bin
@@ -254,7 +264,7 @@ FW_SLICE_GEN := $(BUILD)/fw/fw_slice
 # the compiler's flags: `make firmware ARM_CFLAGS=...` objects were reused by
 # a later plain build).
 FW_STAMP  := $(ARM_BUILD)/fw-options.stamp
-FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE) | $(ARM_CC) $(ARM_CFLAGS)
+FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE) | $(FW_BOARD_SRC) | $(ARM_CC) $(ARM_CFLAGS)
 ifneq ($(filter firmware firmware-bench $(ARM_BUILD)/%,$(MAKECMDGOALS)),)
 $(shell mkdir -p $(ARM_BUILD) && (echo '$(FW_OPTIONS)' | cmp -s - $(FW_STAMP) || echo '$(FW_OPTIONS)' > $(FW_STAMP)))
 endif
@@ -312,6 +322,7 @@ firmware: $(ARM_LIB) $(FW_ELF)
 	@sz=0; sk=0; sh port/cortex-m/tools/fw_size.sh $(ARM_SIZE) $(FW_ELF) $(FW_FLASH_BUDGET) $(FW_RAM_BUDGET) || sz=1; \
 	  $(PYTHON) port/cortex-m/tools/stack_report.py --elf $(FW_ELF) --objdump $(ARM_OBJDUMP) \
 	    --indirect port/cortex-m/tools/indirect_calls.txt --reserve-symbol _stack_size --nm $(ARM_NM) \
+	    $(addprefix --priority ,$(FW_STACK_PRIORITIES)) --at-least fnav_cm_imu_read=$(FW_IMU_READ_ROOM) \
 	    $(patsubst %.o,%.ci,$(FW_OBJ) $(ARM_CORE_OBJ)) || sk=1; \
 	  if [ $$sz -ne 0 ] || [ $$sk -ne 0 ]; then echo "firmware: FAILED (budget or stack, see above)"; exit 1; fi
 
@@ -333,6 +344,7 @@ firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
 	@sh tests/m4/ticks.sh
 	@sh tests/m4/wait.sh
 	@sh tests/m4/exit.sh
+	@MAKE='$(MAKE)' sh tests/m4/stack.sh
 
 # ---------------------------------------------------------------- bench
 bench: $(HARNESS) $(BENCH_BINS)

@@ -14,14 +14,27 @@ Indirect calls must be resolved by a table (CALLER: TARGET ...); an
 unlisted indirect call, a recursion or an unbounded dynamic frame fails.
 
 Entry points: Reset_Handler (thread mode: reset -> main loop) and every
-exception handler of the image. The total assumes one interrupt level (all
-configurable interrupts share one priority, as in the reference firmware):
-thread-mode worst case + the deepest handler + one exception frame with FPU
-context (26 words = 104 bytes, ARMv7-M ARM B1.5.7). It is compared with the
-stack reserved by the linker script (--reserve-symbol).
+exception handler of the image. Nesting: --priority HANDLER=LEVEL puts a
+handler at a preemption level (a higher level preempts a lower one; the
+handlers not named are at level 0, where none preempts another, as with
+the NVIC's reset priorities). Every level present stacks on the one below
+it: the total is the thread's worst case, then for each level from the
+lowest an exception frame with FPU context (26 words = 104 bytes, ARMv7-M
+ARM B1.5.7; the interrupted code used the FPU) and the level's deepest
+handler. Below a preemption (the thread, and every level but the highest)
+a depth is rounded up to 8: the frame is 8-byte aligned (CCR.STKALIGN), so
+a preemption where the stack is 4 mod 8 adds 4 bytes of padding, and any
+depth d preempted at a point x <= d costs at most round8(d). The total is
+compared with the stack reserved by the linker script (--reserve-symbol).
+
+--at-least FUNCTION=BYTES counts a function's frame as at least BYTES: room
+for a board's function the image holds a stub of (fnav_cm_imu_read, called
+in the sample-ready interrupt; the stub's frame is 0). A board linking its
+own has it measured as any function, and the larger is counted.
 
 usage: stack_report.py --elf ELF --objdump TOOL --nm TOOL --indirect FILE
-                       [--reserve-symbol SYM] CI-FILE...
+                       [--reserve-symbol SYM] [--priority HANDLER=LEVEL]...
+                       [--at-least FUNCTION=BYTES]... CI-FILE...
 """
 import argparse
 import re
@@ -148,6 +161,8 @@ def main():
     ap.add_argument('--nm', required=True)
     ap.add_argument('--indirect', required=True)
     ap.add_argument('--reserve-symbol')
+    ap.add_argument('--priority', action='append', default=[], metavar='HANDLER=LEVEL')
+    ap.add_argument('--at-least', action='append', default=[], metavar='FUNCTION=BYTES')
     ap.add_argument('ci', nargs='*')
     a = ap.parse_args()
 
@@ -177,6 +192,23 @@ def main():
         if name in funcs:
             errors.append('%s has an unbounded dynamic stack frame' % name)
 
+    def pairs(items, what):
+        out = {}
+        for it in items:
+            name, _, val = it.partition('=')
+            if not name or not val.isdigit():
+                sys.exit('stack_report: --%s %s: expected NAME=NUMBER' % (what, it))
+            out[name] = int(val)
+        return out
+
+    level_of = pairs(a.priority, 'priority')
+    at_least = pairs(a.at_least, 'at-least')
+    for name, n in sorted(at_least.items()):
+        if name not in funcs:
+            errors.append('--at-least %s: no such function in the image' % name)
+        elif frame[name] < n:
+            frame[name], source[name] = n, 'reserved'
+
     memo, path_of = {}, {}
 
     def worst(name, stack):
@@ -200,18 +232,42 @@ def main():
     entries = [e for e in entries if e in funcs]
     # weak aliases share an address: report each handler name once
     print('stack: worst case per entry point (bytes; su = -fstack-usage, asm = from the disassembly)')
-    handler_worst = 0
     for e in entries:
         w = worst(e, [])
-        chain = ' > '.join('%s(%d%s)' % (n, frame.get(n, 0), '' if source.get(n) == 'su' else ' asm')
+        tag = {'su': '', 'reserved': ' reserved'}
+        chain = ' > '.join('%s(%d%s)' % (n, frame.get(n, 0), tag.get(source.get(n), ' asm'))
                            for n in path_of[e])
         print('stack: %-28s %5d  %s' % (e, w, chain))
+    for name in level_of:
+        if name not in entries:
+            errors.append('--priority %s: no such handler in the image' % name)
+    levels = {}  # level -> (depth, handler)
+    for e in entries:
         if e != 'Reset_Handler':
-            handler_worst = max(handler_worst, w)
+            lv = level_of.get(e, 0)
+            if lv not in levels or memo[e] > levels[lv][0]:
+                levels[lv] = (memo[e], e)
     thread = memo.get('Reset_Handler', 0)
-    total = thread + handler_worst + FP_EXCEPTION_FRAME
-    print('stack: total worst case = thread %d + deepest handler %d + exception frame with FPU context %d = %d bytes'
-          % (thread, handler_worst, FP_EXCEPTION_FRAME, total))
+
+    def round8(x):
+        return (x + 7) // 8 * 8
+
+    total = round8(thread)
+    terms = ['thread %d%s' % (thread, '' if round8(thread) == thread else ' (%d aligned)' % round8(thread))]
+    order = sorted(levels)
+    for i, lv in enumerate(order):
+        depth, name = levels[lv]
+        d = depth if i == len(order) - 1 else round8(depth)
+        total += FP_EXCEPTION_FRAME + d
+        terms.append('frame %d + level %d %s %d%s' % (FP_EXCEPTION_FRAME, lv, name, depth,
+                                                       '' if d == depth else ' (%d aligned)' % d))
+    print('stack: total worst case, %d interrupt level%s nested = %s = %d bytes'
+          % (len(order), '' if len(order) == 1 else 's', ' + '.join(terms), total))
+    for name, n in sorted(at_least.items()):
+        if name in funcs:
+            print('stack: room for %s: %d bytes (--at-least %d; %s)'
+                  % (name, frame[name], n, 'the image\'s is smaller: the room counted' if source[name] == 'reserved'
+                     else 'the image\'s own frame, measured'))
     if a.reserve_symbol:
         reserve = symbol_value(a.nm, a.elf, a.reserve_symbol)
         if reserve is None:
@@ -219,7 +275,9 @@ def main():
         else:
             print('stack: reserved by the linker script: %d bytes (%s)' % (reserve, a.reserve_symbol))
             if total > reserve:
-                errors.append('worst-case stack %d exceeds the reserve of %d bytes' % (total, reserve))
+                errors.append('worst-case stack %d exceeds the reserve of %d bytes by %d' % (total, reserve, total - reserve))
+            else:
+                print('stack: margin %d bytes' % (reserve - total))
     for e in errors:
         print('stack: error: %s' % e)
     return 1 if errors else 0
