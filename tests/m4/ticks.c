@@ -50,7 +50,7 @@ void fnav_port_assert_failed(const char *file, int line, const char *expr)
  * up to 1 ms after the boundary */
 #define EMU_WINDOW_NS 400
 /* the loop must cross millisecond boundaries to read near them: it spans
- * 39 (docs/firmware.md, "Board hooks"), so 10 leaves room for a loop
+ * 41 (docs/firmware.md, "Board hooks"), so 10 leaves room for a loop
  * nearly 4 times faster on another QEMU or compiler */
 #define MIN_WRAPS 10u
 
