@@ -122,6 +122,16 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     res.meta.has_temp = 0; /* the resampler carries no temperature */
     res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (marked as "the
                               sensor's own counter", info would count no drops) */
+    if (lrc > 0 && wd->end_ns >= 0 && raw.n > 0 && fs > 0.0) {
+        /* an --end before the error: the window is whole, as without
+         * --rate, when the samples read reach past it by the resampler's
+         * kernel (half length ceil(20 fs / rate) input samples,
+         * hx_nav_resample): exit 0, the .bin closed (it was cut, exit 1) */
+        const double reach_s = (ceil(20.0 * fs / rate) + 1.0) / fs;
+        if (1e-9 * (double)(raw.t_ns[raw.n - 1] - raw.t_ns[0]) > 1e-9 * (double)wd->end_ns + reach_s) {
+            exit_code = HX_EXIT_OK;
+        }
+    }
     if (raw.n > 0) {
         wd->t0_ns = raw.t_ns[0]; /* the window counts from the input's first sample */
         wd->have_t0 = 1;
@@ -147,7 +157,8 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     }
     hx_log_free(&res);
     /* an input read up to an error: a .bin without END, as convert's below */
-    if ((lrc > 0 ? hx_writer_close_cut(w, err, sizeof err) : hx_writer_close(w, err, sizeof err)) != FNAV_OK) {
+    if ((exit_code == HX_EXIT_DATA ? hx_writer_close_cut(w, err, sizeof err) : hx_writer_close(w, err, sizeof err)) !=
+        FNAV_OK) {
         hx_error("convert", "%s", err);
         exit_code = HX_EXIT_IO;
     }

@@ -584,7 +584,7 @@ int hx_cmd_info(int argc, char **argv)
     printf("            gyro (%.5f, %.5f, %.5f) rad/s = (%.3f, %.3f, %.3f) deg/s\n", in.gyro_rest[0], in.gyro_rest[1],
            in.gyro_rest[2], in.gyro_rest[0] * 57.29577951308232, in.gyro_rest[1] * 57.29577951308232,
            in.gyro_rest[2] * 57.29577951308232);
-    if (!in.still && !in.no_gravity) {
+    if (!in.still && in.g_mag > 0.0) { /* at |f| = 0 no ratio: the no-gravity line says the spread */
         printf("            not still: f spreads by %.0f %% of its mean |f| in that second (a rest: below %.0f %%)\n",
                100.0 * in.still_spread, 100.0 * INFO_STILL_SPREAD);
     }

@@ -920,7 +920,7 @@ static int read_line(hx_reader_t *r)
     }
     r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
-        set_err(r, "%s:%ld: line longer than %d characters%s", r->path, r->stats.lines, HX_LINE_MAX - 1,
+        set_err(r, "%s:%ld: line longer than %d bytes with its line end%s", r->path, r->stats.lines, HX_LINE_MAX - 1,
                 hx_cr_alone(r->line) ? HX_CR_ALONE_HINT : "");
         return -1;
     }

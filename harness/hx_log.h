@@ -386,8 +386,9 @@ hx_comment_t hx_comment_line(const char *line, const char **text);
  *  quote) a number, a date and time, or a date. */
 int hx_data_row(const char *line);
 /** The text readers' line buffer, bytes (the log reader's and merge's): a
- *  line of more than HX_LINE_MAX - 1 characters stops the read, "PATH:LINE:
- *  line longer than 4095 characters" (docs/log-format.md, "CSV
+ *  line of more than HX_LINE_MAX - 1 bytes with its line end (4094
+ *  characters and a newline fit, not 4095) stops the read, "PATH:LINE:
+ *  line longer than 4095 bytes with its line end" (docs/log-format.md, "CSV
  *  interchange"). */
 #define HX_LINE_MAX 4096
 /** A line cut by a NUL byte (gzgets stops at none: the text after it is

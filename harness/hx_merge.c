@@ -183,7 +183,7 @@ static int next_line(text_t *t, const char *path, char *msg, size_t size)
         return -1;
     }
     if (len == sizeof t->line - 1 && t->line[len - 1] != '\n' && !gzeof(t->gz)) {
-        say(msg, size, "%s:%ld: line longer than %d characters%s", path, t->lineno, HX_LINE_MAX - 1,
+        say(msg, size, "%s:%ld: line longer than %d bytes with its line end%s", path, t->lineno, HX_LINE_MAX - 1,
             hx_cr_alone(t->line) ? HX_CR_ALONE_HINT : "");
         return -1;
     }
@@ -211,10 +211,10 @@ typedef struct {
     hx_name_unit_t t_unit, unit;
 } cols_t;
 
-/* The columns of a kind's file from its header fields f[0..n) and the
- * first data row d[0..nd). 0, or -1 with msg. */
+/* The columns of a kind's file from its header fields f[0..n) (on line
+ * line) and the first data row d[0..nd) (on row_line). 0, or -1 with msg. */
 static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_t kind, const char *path,
-                     long line, cols_t *c, char *msg, size_t size)
+                     long line, long row_line, cols_t *c, char *msg, size_t size)
 {
     int i, k, own[3][3], nown[3] = { 0, 0, 0 }, other = -1, nother = 0, times[8], ntimes = 0, bare_used = 0, best;
     const int k0 = kind == HX_TRI_ACC ? 1 : 4, ko = kind == HX_TRI_ACC ? 4 : 1;
@@ -349,7 +349,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     }
     if (c->t < 0) {
         if (ntimes > 0) {
-            say(msg, size, "%s:%ld: the time column ('%s') holds no number in the first row ('%s')", path, line,
+            say(msg, size, "%s:%ld: the time column ('%s') holds no number in the first row ('%s')", path, row_line,
                 f[times[0]], times[0] < nd ? d[times[0]] : "");
         } else {
             say(msg, size, "%s:%ld: the header names no time column (t, time, timestamp, elapsed, 'Time (s)', ...)",
@@ -436,7 +436,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     cols_t c;
     size_t cap = 0;
     double scale, *probe = NULL;
-    hx_csv_layout_t l;
+    hx_csv_layout_t l, ask; /* ask: the --units given, for a remedy that names one --units for both files */
     memset(f, 0, sizeof *f);
     f->kind = kind;
     t = (text_t *)calloc(1, sizeof *t);
@@ -526,7 +526,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     /* a trailing delimiter names no field (as the log reader counts them) */
     f->hdr_fields = delim == ' ' || total > TRI_MAX_COLS ? nh : hx_named_fields(hf, nh, total);
     nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
-    if (find_cols(hf, nh, df, nd, delim, kind, path, hline, &c, err, err_size) != 0) {
+    if (find_cols(hf, nh, df, nd, delim, kind, path, hline, t->lineno, &c, err, err_size) != 0) {
         if (total > TRI_MAX_COLS && strlen(err) + 80 < err_size) {
             /* names past the columns read may be the ones looked for */
             say(err + strlen(err), err_size - strlen(err), " (merge reads the first %d columns of a header; this "
@@ -545,6 +545,11 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     } else {
         hx_csv_layout_default(&l);
     }
+    /* the ug question's remedy names --units as given, not this file's
+     * header units: one --units applies to both files (a 'time (ms)'
+     * header made it 'give --units time=ms,accel=ug', which read the
+     * other file's seconds as ms) */
+    ask = l;
     if (!(l.units_given & 1)) {
         hx_csv_layout_unit(&l, c.t_unit);
     }
@@ -625,7 +630,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                 /* what the log reader refuses in the merged log: the file
                  * stops here, as at a row of text */
                 char what[160];
-                if (hx_value_beyond(v[k], scale, kind == HX_TRI_ACC ? &l : NULL, what, sizeof what)) {
+                if (hx_value_beyond(v[k], scale, kind == HX_TRI_ACC ? &ask : NULL, what, sizeof what)) {
                     say(f->error, sizeof f->error, "%s:%ld: column %d ('%.20s') is %s", path, t->lineno,
                         c.ax[k] + 1, df[c.ax[k]], what);
                     bad = c.ax[k];

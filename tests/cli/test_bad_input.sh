@@ -133,6 +133,13 @@ for r in "" 50; do
 done
 expect_exit 0 "convert to .bin of a whole log" "$H" convert "$T/nan200.csv" "$T/whole.bin" --end 1.5
 expect_exit 0 "info of the window's .bin: complete (END written)" "$H" info "$T/whole.bin"
+# with --rate too: a window that ends before the error by the resampler's
+# reach (ceil(20 fs / rate) + 1 input samples, 0.41 s at 100 -> 50 Hz) is
+# whole (it was cut, exit 1); one that ends within that reach is not
+expect_exit 0 "convert --rate 50 --end 1.5 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/wr.bin" --end 1.5 --rate 50
+expect_exit 0 "info of that .bin: complete (END written)" "$H" info "$T/wr.bin"
+expect_exit 1 "convert --rate 50 --end 1.9: the error within the resampler's reach" "$H" convert "$T/nan200.csv" "$T/wr2.bin" --end 1.9 --rate 50
+expect_exit 1 "info of that .bin: incomplete" "$H" info "$T/wr2.bin"
 
 # --- an accelerometer that reads exactly 0 (disabled, or not written by the
 # logger): info said "gravity along -x" and "f spreads by inf %" with no

@@ -438,7 +438,16 @@ expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time c
     "a time in milliseconds is named as such, with the option"
 awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 600; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr.csv"
 expect_exit 1 "lines ending in CR alone" "$H" info "$T/cr.csv"
-expect_err "line longer than 4095 characters (its lines end in a carriage return alone" "CR-only line ends are named"
+expect_err "line longer than 4095 bytes with its line end (its lines end in a carriage return alone" "CR-only line ends are named"
+# the limit's boundary: a row of 4094 characters and its newline is read,
+# one of 4095 is not (the message said "longer than 4095 characters" of it)
+for n in 4094 4095; do
+    awk -v n=$n 'BEGIN { print "t,ax,ay,az,gx,gy,gz,note"; for (i = 0; i < 300; i++) {
+        r = sprintf("%.2f,0,0,9.8,0,0,0,", i / 100); if (i == 150) { while (length(r) < n) r = r "x" } else r = r "x"; print r } }' >"$T/l$n.csv"
+done
+expect_exit 0 "a row of 4094 characters and a newline" "$H" info "$T/l4094.csv"
+expect_exit 1 "a row of 4095 characters and a newline" "$H" info "$T/l4095.csv"
+expect_err "l4095.csv:152: line longer than 4095 bytes with its line end" "the limit said in bytes with the line end"
 awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 20; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr_short.csv"
 expect_exit 1 "a short file of lines ending in CR alone" "$H" info "$T/cr_short.csv"
 expect_err "cr_short.csv:1: a carriage return inside the line (its lines end in a carriage return alone" \

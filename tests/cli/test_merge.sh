@@ -426,7 +426,7 @@ PY
 # merge's lines are as long as the log reader's (HX_LINE_MAX): a row of
 # 5000 characters stops it there (it read lines up to 8191)
 expect_exit 1 "merge: a line longer than the log reader's" "$H" merge "$T/c_long.csv" "$T/c_gyr.csv" "$T/o.csv"
-expect_err "c_long.csv:101: line longer than 4095 characters (the 99 samples before it are merged)" \
+expect_err "c_long.csv:101: line longer than 4095 bytes with its line end (the 99 samples before it are merged)" \
     "merge: the over-long line named as the log reader names it"
 # a value beyond 1e6 in SI units stops the file at its row, as the log
 # reader stops (merge wrote it, exit 0: 1e39 a .bin record info refused as
@@ -449,6 +449,17 @@ for v in c_np c_npb c_sep; do
 done
 expect_exit 1 "merge: a header naming no axis under a note" "$H" merge "$T/c_note.csv" "$T/c_gyr.csv" "$T/o.csv"
 expect_err "c_note.csv:2: the header names no accelerometer axis" "merge: the header's own line named"
+# an error of the first data row at its own line (it said the header's)
+printf '# note\n\nt,acc_x,acc_y,acc_z\n\nabc,0,0,9.8\n0.01,0,0,9.8\n' >"$T/c_row.csv"
+expect_exit 1 "merge: text in the first row's time" "$H" merge "$T/c_row.csv" "$T/c_gyr.csv" "$T/o.csv"
+expect_err "c_row.csv:5: the time column ('t') holds no number in the first row ('abc')" "merge: the first row's own line named"
+# the ug question's remedy names the --units given, not a unit a header
+# names: 'time (ms)' made it 'give --units time=ms,accel=ug', which read the
+# gyroscope's seconds as ms (400 samples at 100 kHz, exit 0)
+awk 'BEGIN { print "time (ms),acc_x,acc_y,acc_z"; for (i = 0; i < 300; i++) printf "%d,0,0,9806650\n", i * 10 }' >"$T/c_ugms.csv"
+expect_exit 1 "merge: ug values under a 'time (ms)' header" "$H" merge "$T/c_ugms.csv" "$T/c_gyr.csv" "$T/o.csv"
+expect_err "in ug? 1 g is 1e6 ug: give --units accel=ug)" "merge: the ug remedy names accel=ug alone"
+expect_exit 0 "merge: the remedy followed" "$H" merge "$T/c_ugms.csv" "$T/c_gyr.csv" "$T/o.csv" --units accel=ug
 # stamps of 1 to 20 Hz in seconds: the remedy names seconds too (it named
 # ms alone, which made the 12.5 Hz log one of 12.5 kHz), and it works
 expect_exit 1 "merge: a 12.5 Hz log, its time unit not named" "$H" merge "$T/c_acc12.csv" "$T/c_gyr12.csv" "$T/o.csv"
