@@ -256,7 +256,11 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
 {
     double rate = (double)cfg->stance.rate_hz, gap = (double)cfg->max_gap_s;
     const double att_max = (double)fnav_nav_att_sd_max_rad(cfg);
-    if (rate > 0.0 && gap > 0.0 && !(gap * rate > 1.5)) {
+    const fnav_align_config_t *al = &cfg->align;
+    /* the product in fnav_real_t, as fnav_nav_init forms it: 0.2f x 7.5 is
+     * 1.5 exactly there and 1.50000002 in double ("rejected by the core"
+     * at --rate 7.5, the documented limit) */
+    if (rate > 0.0 && gap > 0.0 && !(cfg->max_gap_s * cfg->stance.rate_hz > FNAV_R(1.5))) {
         /* fnav_nav_init's rule: a time jump (max_gap_s) must be longer than
          * a gap of 1.5 intervals. Stamps of 10 s resolution gave a rate of
          * 2.9 Hz here and "check --param values" with no --param given. */
@@ -275,6 +279,23 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
                  "(fewer states allow more: docs/navigation.md, \"States\")",
                  yaw ? "yaw_sd_deg" : "tilt_sd_deg", r2d * (double)(yaw ? cfg->yaw_sd_rad : cfg->tilt_sd_rad),
                  r2d * att_max);
+    } else if (al->max_still_s >= al->min_still_s && al->short_still_s > FNAV_R(0.0) &&
+               cfg->realign_min_s > al->max_still_s) {
+        /* the rules between keys (fnav_nav_init, fnav_align_init), each
+         * named with both keys: "--param align_max_s=2" was "rejected by
+         * the core" for the default realign_min_s 3 */
+        snprintf(err, err_size,
+                 "realign_min_s = %g s is above align_max_s = %g s: a still period ends at align_max_s, so it would "
+                 "never renew the alignment (give realign_min_s at most align_max_s, or 0: off)",
+                 (double)cfg->realign_min_s, (double)al->max_still_s);
+    } else if (al->min_still_s > FNAV_R(0.0) && al->max_still_s < al->min_still_s) {
+        snprintf(err, err_size, "align_max_s = %g s is below align_min_s = %g s (the alignment's longest still "
+                                "period must be at least its shortest)",
+                 (double)al->max_still_s, (double)al->min_still_s);
+    } else if (al->min_still_s > FNAV_R(0.0) && al->short_still_s > al->min_still_s) {
+        snprintf(err, err_size, "align_short_s = %g s is above align_min_s = %g s (the fallback for a walk that "
+                                "starts early is the shorter still period)",
+                 (double)al->short_still_s, (double)al->min_still_s);
     } else {
         snprintf(err, err_size, "navigation configuration rejected by the core%s", other);
     }

@@ -57,6 +57,18 @@ expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexist
 expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
 expect_err "rejected" "rejected configuration explained"
+# a value refused for another key's: both keys named with the rule ("--param
+# align_max_s=2" was "rejected by the core" for the default realign_min_s 3)
+expect_exit 2 "align_max_s below realign_min_s" "$H" replay vectors/walk.bin --quiet --param align_max_s=2
+expect_err "realign_min_s = 3 s is above align_max_s = 2 s" "the two keys and the rule named"
+expect_exit 0 "align_max_s=2 with realign_min_s=0" "$H" replay vectors/walk.bin --quiet --param align_max_s=2 --param realign_min_s=0 --out "$T/am.csv"
+expect_exit 2 "align_min_s above align_max_s" "$H" replay vectors/walk.bin --quiet --param align_min_s=6
+expect_err "align_max_s = 5 s is below align_min_s = 6 s" "align_min_s's rule named"
+expect_exit 2 "align_short_s above align_min_s" "$H" replay vectors/walk.bin --quiet --param align_short_s=0.6
+expect_err "align_short_s = 0.6 s is above align_min_s = 0.5 s" "align_short_s's rule named"
+# the rate limit at its boundary said as below it (7.5 Hz: 0.2f x 7.5 is 1.5 in float)
+expect_exit 2 "--rate 7.5, the limit" "$H" replay vectors/walk.bin --quiet --rate 7.5
+expect_err "so the rate must be above 7.5 Hz" "the limit's own rate named as too low"
 expect_exit 1 "missing log" "$H" replay /nonexistent/log.csv
 # a profile file is an input: an output onto it is refused, not written over
 # it after it is read with exit 0 (montecarlo's the same)
