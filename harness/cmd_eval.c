@@ -1575,6 +1575,14 @@ static const char *target(int have_data, int ok)
     return have_data ? met(ok) : "no data";
 }
 
+/* The ipol detection target's status: "nothing evaluated" when no expert
+ * swing was evaluated and no swing was spurious (never "met" on nothing);
+ * a spurious swing fails it even then. */
+static const char *ipol_judged(const ipol_t *ip, int ok)
+{
+    return ip->expected == 0 && ip->spurious == 0 ? "nothing evaluated" : met(ok);
+}
+
 static const char *fmt_pct(char *buf, size_t size, double v)
 {
     return fmt_v(buf, size, "%.2f %%", v);
@@ -2269,8 +2277,14 @@ int hx_cmd_eval(int argc, char **argv)
                        "missed or spurious: %s); %d expert swings left out for overlapping the other foot's "
                        "(with them kept: %d missed, %d spurious). ",
                 ip.trials, ip.expected, ip.detected, ip.missed, ip.off_time, IPOL_TOL, ip.spurious,
-                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious);
-        if (ip.n_fo > 0) {
+                ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed,
+                ip.strict_spurious);
+        if (ip.expected == 0) {
+            /* no expert swing to evaluate (logs cut before the first one):
+             * nothing judged, not "met" on nothing */
+            fprintf(ev.md, "Event timing: no expert swing to evaluate, no event to time (target <= 2: nothing "
+                           "evaluated).\n\n");
+        } else if (ip.n_fo > 0) {
             fprintf(ev.md, "Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile %.1f), median "
                            "|FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
                     ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
@@ -2499,15 +2513,19 @@ int hx_cmd_eval(int argc, char **argv)
                 target(isfinite(xs), xs < 0.082));
         fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
                 target(isfinite(xl), xl < 0.421));
-        if (ip.trials > 0) {
+        if (ip.trials > 0 && ip.expected == 0) {
+            snprintf(v, sizeof v, "no expert swing to evaluate, %d spurious", ip.spurious);
+        } else if (ip.trials > 0) {
             snprintf(v, sizeof v, "%d missed, %d spurious (%d and %d with the %d both-feet swings kept)", ip.missed,
                      ip.spurious, ip.strict_missed, ip.strict_spurious, ip.both_feet);
         } else {
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
-                target(ip.trials, ip.missed == 0 && ip.spurious == 0));
-        if (ip.trials > 0 && ip.n_fo > 0) {
+                ip.trials > 0 ? ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0) : target(0, 0));
+        if (ip.trials > 0 && ip.expected == 0) {
+            snprintf(v, sizeof v, "no expert swing to evaluate");
+        } else if (ip.trials > 0 && ip.n_fo > 0) {
             snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
         } else if (ip.trials > 0) {
             snprintf(v, sizeof v, "no event timed"); /* not "FO nan, FS nan" */
@@ -2515,7 +2533,9 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
-                target(ip.trials, ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+                ip.trials == 0         ? target(0, 0)
+                : ip.expected == 0     ? "nothing evaluated"
+                                       : met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
     if (ev.main_failures > 0) {
         fprintf(ev.md, "\n**%d run(s) failed** (\"not run\" in the tables above, with the reason). The figures and "
@@ -2559,9 +2579,12 @@ int hx_cmd_eval(int argc, char **argv)
         hx_json_num(j, "footprints_final_pct_mean", fp.final_pct_mean);
         hx_json_num(j, "vicon_stride_err_m_median", vi.stride_med);
         /* the counts are 0 on no trials: null, as every absent figure */
-        hx_json_num(j, "ipol_missed", ip.trials > 0 ? (double)ip.missed : (double)NAN);
+        /* missed counts of no expert swing evaluated: null, not 0 (as
+         * "nothing evaluated" in the Targets) */
+        hx_json_num(j, "ipol_missed", ip.trials > 0 && ip.expected > 0 ? (double)ip.missed : (double)NAN);
         hx_json_num(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
-        hx_json_num(j, "ipol_missed_strict", ip.trials > 0 ? (double)ip.strict_missed : (double)NAN);
+        hx_json_num(j, "ipol_missed_strict",
+                    ip.trials > 0 && ip.expected + ip.both_feet > 0 ? (double)ip.strict_missed : (double)NAN);
         hx_json_num(j, "ipol_spurious_strict", ip.trials > 0 ? (double)ip.strict_spurious : (double)NAN);
         hx_json_num(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
         hx_json_num(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);

@@ -809,5 +809,27 @@ if grep -qxF "harness eval: warning: $T/bursts_in_a_folder_named_at_some_length/
 if grep -qxF "| Measurement_2000_1 | - | - | - | - | - | - | - | - | not run: $bursts_msg |" "$T/bursts.md"; then
     pass "bursts: the walk's row carries the whole remedy"; else fail "bursts: row $(grep '^| Measurement' "$T/bursts.md")"; fi
 
+# --- an ipol trial whose logs end before the first expert swing (each cut to 30,000 bytes): no expert swing is
+# evaluated, and neither target is judged ("nothing evaluated"; the detection target read "met" on 0 expert
+# strides, its JSON ipol_missed 0, the timing line "no expert swing detected")
+if [ -n "$D" ]; then
+    B="$T/ipolcut"
+    mkdir -p "$B/ipol_gait_xsens"
+    cp "$D/ipol_gait_xsens/1-1.json" "$B/ipol_gait_xsens/"
+    for f in lf rf; do head -c 30000 "$D/ipol_gait_xsens/1-1_$f.txt" >"$B/ipol_gait_xsens/1-1_$f.txt"; done
+    expect_exit 0 "eval: ipol logs cut before the first expert swing" "$H" eval --no-experiments --no-plots --data "$B" \
+        --out "$T/ipolcut.md" --json "$T/ipolcut.json"
+    if grep -q "^| ipol: no missed or spurious strides | no expert swing to evaluate, 0 spurious | nothing evaluated |$" "$T/ipolcut.md" &&
+        grep -q "^| ipol: median event timing error <= 2 samples | no expert swing to evaluate | nothing evaluated |$" "$T/ipolcut.md" &&
+        grep -q "Event timing: no expert swing to evaluate, no event to time (target <= 2: nothing evaluated)" "$T/ipolcut.md" &&
+        ! grep -q "| met |" "$T/ipolcut.md" &&
+        json "$T/ipolcut.json" 'j["ipol_missed"] is None and j["ipol_missed_strict"] is None and j["ipol_spurious"] == 0'; then
+        pass "no expert swing evaluated: the ipol targets say nothing evaluated, ipol_missed null"
+    else fail "ipol with nothing evaluated: $(grep '^| ipol' "$T/ipolcut.md") $(grep -o '"ipol_missed":[^,]*' "$T/ipolcut.json")"; fi
+    rm -rf "$B"
+else
+    echo "SKIP eval with nothing ipol evaluated: no shared data"
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
