@@ -77,6 +77,8 @@ typedef struct {
     char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
+    const char *unreadable[8]; /* data set folders there but not readable (their errno in unreadable_err) */
+    int unreadable_err[8], n_unreadable;
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -175,7 +177,9 @@ static int suffix_of(const char *name, const char *const *suf, int nsuf)
  * folder's licence, source and readme files. With stem, each name without
  * its suffix, once (a walk's IMU log and truth files, found from any of
  * them: a truth file without its log is a walk that failed, not one to
- * pass over). The count; 0 when dir cannot be read. */
+ * pass over). The count; 0 when dir does not exist, -1 with errno when
+ * it cannot be read (no permission, not a directory: not taken for a set
+ * that is absent). */
 static int list_data(const char *dir, const char *const *suf, int nsuf, int stem, ev_name_t **names)
 {
     DIR *d = opendir(dir);
@@ -183,7 +187,7 @@ static int list_data(const char *dir, const char *const *suf, int nsuf, int stem
     size_t n = 0, cap = 0, i, k;
     *names = NULL;
     if (d == NULL) {
-        return 0;
+        return errno == ENOENT ? 0 : -1;
     }
     while ((e = readdir(d)) != NULL) {
         size_t l = strlen(e->d_name);
@@ -216,6 +220,45 @@ static int list_data(const char *dir, const char *const *suf, int nsuf, int stem
 static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
 {
     return list_data(dir, &suffix, 1, 0, names);
+}
+
+/* The data files of the data set folder sub (list_data), listed before
+ * the run: one that cannot be read is warned about with the reason, kept
+ * for its section ("cannot read", folder_unreadable()) and counted as a
+ * failed run; it counts 0 files. */
+static int list_set(ev_t *ev, const char *sub, const char *const *suf, int nsuf, int stem, ev_name_t **names)
+{
+    char dir[EV_DIR_SIZE];
+    int n;
+    snprintf(dir, sizeof dir, "%s/%s", ev->data, sub);
+    n = list_data(dir, suf, nsuf, stem, names);
+    if (n < 0) {
+        const int err = errno;
+        hx_warn("eval", "cannot read %s (%s): its walks are not evaluated", dir, strerror(err));
+        if (ev->n_unreadable < (int)(sizeof ev->unreadable / sizeof ev->unreadable[0])) {
+            ev->unreadable[ev->n_unreadable] = sub;
+            ev->unreadable_err[ev->n_unreadable++] = err;
+        }
+        ev->failures++;
+        n = 0;
+    }
+    return n;
+}
+
+/* A section's data set folder that could not be read (list_set): said in
+ * results.md ("Cannot read DIR (reason)."), after lead; 1 when it was, 0
+ * when the folder is one to say "No walks found" of. */
+static int folder_unreadable(ev_t *ev, const char *sub, const char *lead)
+{
+    int i;
+    for (i = 0; i < ev->n_unreadable; i++) {
+        if (strcmp(ev->unreadable[i], sub) == 0) {
+            fprintf(ev->md, "%sCannot read `%s/%s` (%s): its walks are not evaluated.\n\n", lead, ev->data, sub,
+                    strerror(ev->unreadable_err[i]));
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* The files of a data set folder that eval does not read (no data file's
@@ -508,6 +551,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/%s", ev->data, sub);
     n = list_walks(dir, suffix, &names);
+    n = n < 0 ? 0 : n; /* cannot be read: warned before the run (list_set) */
     wv = walk_values(walk, n);
     h = (double *)ev_calloc(5 * (size_t)n, sizeof *h);
     d3 = h + n;
@@ -854,6 +898,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev->data);
     n = list_data(dir, k_fp_files, 3, 1, &names);
+    n = n < 0 ? 0 : n; /* cannot be read: warned before the run (list_set) */
     wv = walk_values(walk, n);
     fpct = (double *)ev_calloc(3 * (size_t)n, sizeof *fpct);
     smed = fpct + n;
@@ -1017,6 +1062,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
     int n, i, k = 0, rc;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev->data);
     n = list_data(dir, k_vicon_files, 2, 1, &names);
+    n = n < 0 ? 0 : n; /* cannot be read: warned before the run (list_set) */
     wv = walk_values(walk, n);
     med = (double *)ev_calloc(3 * (size_t)n, sizeof *med);
     rms = med + n;
@@ -1363,6 +1409,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
     memset(out, 0, sizeof *out);
     snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev->data);
     n = list_data(dir, k_ipol_files, 3, 1, &names);
+    n = n < 0 ? 0 : n; /* cannot be read: warned before the run (list_set) */
     out->files = n;
     if (write) {
         fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median \\|FO error\\| | "
@@ -2014,14 +2061,11 @@ int hx_cmd_eval(int argc, char **argv)
     {
         /* the closed walks without a file-name convention of their own */
         static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
-        char dir[EV_DIR_SIZE];
         ev_name_t *names[2];
         int k, j, n[2];
-        snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
-        nxio = list_walks(dir, ".csv", &xio);
+        nxio = list_set(&ev, "xio_ngimu_gait", k_csv_files, 1, 0, &xio);
         for (k = 0; k < 2; k++) {
-            snprintf(dir, sizeof dir, "%s/%s", ev.data, osets[k][0]);
-            n[k] = list_walks(dir, osets[k][1], &names[k]);
+            n[k] = list_set(&ev, osets[k][0], &osets[k][1], 1, 0, &names[k]);
             nother_set[k] = n[k];
         }
         other = (char (*)[300])ev_calloc((size_t)(n[0] + n[1]), sizeof *other);
@@ -2038,23 +2082,18 @@ int hx_cmd_eval(int argc, char **argv)
     hx_command_line(cmdline, sizeof cmdline, "./bin/harness eval", argc, argv);
     {
         /* progress: one run per walk or trial and configuration */
-        char dir[EV_DIR_SIZE];
         ev_name_t *names;
         int ngx2, nfp, nvi, nip;
-        snprintf(dir, sizeof dir, "%s/openshoe_gx2", ev.data);
-        ngx2 = list_walks(dir, "_data_inert.txt", &names);
+        ngx2 = list_set(&ev, "openshoe_gx2", k_gx2_files, 1, 0, &names);
         free(names);
-        snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev.data);
-        nfp = list_data(dir, k_fp_files, 3, 1, &names);
+        nfp = list_set(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", k_fp_files, 3, 1, &names);
         free(names);
-        snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev.data);
-        nvi = list_data(dir, k_vicon_files, 2, 1, &names);
+        nvi = list_set(&ev, "pyshoe_vicon_llio/vicon_3dmgx3", k_vicon_files, 2, 1, &names);
         free(names);
-        snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev.data);
-        nip = 2 * list_data(dir, k_ipol_files, 3, 1, &names);
+        nip = 2 * list_set(&ev, "ipol_gait_xsens", k_ipol_files, 3, 1, &names);
         free(names);
         ev.total_runs = ngx2 + nxio + nother + nfp + nvi + nip;
-        if (ev.total_runs == 0) {
+        if (ev.total_runs == 0 && ev.n_unreadable == 0) {
             /* a MANIFEST.md or data set folders, but not one walk in them
              * (a copy not synced, a wrong directory): nothing to run on,
              * said before results.md is touched (not overwritten with "no
@@ -2114,9 +2153,11 @@ int hx_cmd_eval(int argc, char **argv)
                    "through the stance mid-points. Vertical: height change, up positive.\n\n");
     closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ev.cfg, 0.0, 1, &gx2, NULL);
     if (gx2.n == 0) {
-        fprintf(ev.md, gx2.files > 0 ? "\nNo walk in `%s/openshoe_gx2` gave a result (table).\n\n"
-                                     : "\nNo walks found in `%s/openshoe_gx2`.\n\n",
-                ev.data);
+        if (!folder_unreadable(&ev, "openshoe_gx2", "\n")) {
+            fprintf(ev.md, gx2.files > 0 ? "\nNo walk in `%s/openshoe_gx2` gave a result (table).\n\n"
+                                         : "\nNo walks found in `%s/openshoe_gx2`.\n\n",
+                    ev.data);
+        }
     } else {
         fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
                        "worst 3-D %.2f %% (target <= 1.2 %%: %s); median vertical %+.3f m, median path %.1f m.\n\n",
@@ -2130,7 +2171,9 @@ int hx_cmd_eval(int argc, char **argv)
 
     fprintf(ev.md, "## xio_ngimu_gait: return to start (closed loops, ~400 Hz, irregular timing)\n\n");
     if (nxio == 0) {
-        fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
+        if (!folder_unreadable(&ev, "xio_ngimu_gait", "")) {
+            fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
+        }
     } else {
         char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
@@ -2180,12 +2223,20 @@ int hx_cmd_eval(int argc, char **argv)
                    "a path of centimetres moved too gently for the foot-tuned detector (docs/navigation.md, "
                    "\"Stance detector\").\n\n");
     if (nother == 0) {
-        fprintf(ev.md, "No walks found in `%s/openshoe_c_820hz` or `%s/openshoe_square2`.\n\n", ev.data, ev.data);
+        const int u0 = folder_unreadable(&ev, "openshoe_c_820hz", ""), u1 = folder_unreadable(&ev, "openshoe_square2", "");
+        if (!u0 && !u1) {
+            fprintf(ev.md, "No walks found in `%s/openshoe_c_820hz` or `%s/openshoe_square2`.\n\n", ev.data,
+                    ev.data);
+        } else if (!u0 || !u1) {
+            fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data, u0 ? "openshoe_square2" : "openshoe_c_820hz");
+        }
     } else {
         /* one of the two sets absent: said, as every other absent set */
-        if (nother_set[0] == 0 || nother_set[1] == 0) {
-            fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data,
-                    nother_set[0] == 0 ? "openshoe_c_820hz" : "openshoe_square2");
+        for (i = 0; i < 2; i++) {
+            const char *sub = i == 0 ? "openshoe_c_820hz" : "openshoe_square2";
+            if (nother_set[i] == 0 && !folder_unreadable(&ev, sub, "")) {
+                fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data, sub);
+            }
         }
         char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
@@ -2229,9 +2280,11 @@ int hx_cmd_eval(int argc, char **argv)
                    "in the initial-heading frame (the `_strides_gcp.csv` truth), starting at the first stride.\n\n");
     footprints(&ev, &ev.cfg, 0.0, 1, &fp, &fp_walk);
     if (fp.n == 0) {
-        fprintf(ev.md, fp.files > 0 ? "\nNo walk in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints` gave a result (table).\n\n"
-                                    : "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n",
-                ev.data);
+        if (!folder_unreadable(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", "\n")) {
+            fprintf(ev.md, fp.files > 0 ? "\nNo walk in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints` gave a result (table).\n\n"
+                                        : "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n",
+                    ev.data);
+        }
     } else {
         fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
                        "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
@@ -2246,9 +2299,11 @@ int hx_cmd_eval(int argc, char **argv)
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
     vicon(&ev, &ev.cfg, 1, &vi, NULL);
     if (vi.n == 0) {
-        fprintf(ev.md, vi.files > 0 ? "\nNo trial in `%s/pyshoe_vicon_llio/vicon_3dmgx3` gave a result (table).\n\n"
-                                    : "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n",
-                ev.data);
+        if (!folder_unreadable(&ev, "pyshoe_vicon_llio/vicon_3dmgx3", "\n")) {
+            fprintf(ev.md, vi.files > 0 ? "\nNo trial in `%s/pyshoe_vicon_llio/vicon_3dmgx3` gave a result (table).\n\n"
+                                        : "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n",
+                    ev.data);
+        }
     } else {
         fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
                        "median final error %.3f m.\n\n",
@@ -2268,9 +2323,11 @@ int hx_cmd_eval(int argc, char **argv)
             IPOL_TOL);
     ipol(&ev, &ev.cfg, 1, &ip);
     if (ip.trials == 0) {
-        fprintf(ev.md, ip.files > 0 ? "\nNo trial in `%s/ipol_gait_xsens` gave a result (table).\n\n"
-                                    : "\nNo trials found in `%s/ipol_gait_xsens`.\n\n",
-                ev.data);
+        if (!folder_unreadable(&ev, "ipol_gait_xsens", "\n")) {
+            fprintf(ev.md, ip.files > 0 ? "\nNo trial in `%s/ipol_gait_xsens` gave a result (table).\n\n"
+                                        : "\nNo trials found in `%s/ipol_gait_xsens`.\n\n",
+                    ev.data);
+        }
     } else {
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "
                        "detected swing whose events are %d samples or more away), %d spurious (target: none "

@@ -831,5 +831,37 @@ else
     echo "SKIP eval with nothing ipol evaluated: no shared data"
 fi
 
+# --- a data set folder there but not readable was taken for one that is absent ("No walks found", its targets
+# "no data", exit 0, without a word): warned with the reason, a failed run (exit 1), and said in its section.
+# A folder's name that is a file (root meets it), and a folder without read permission (as another user:
+# root reads any folder)
+B="$T/unread"
+mkdir -p "$B/openshoe_square2"
+still "$B/openshoe_square2/walk.csv"
+: >"$B/openshoe_gx2"
+expect_exit 1 "eval: a data set folder's name a file" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/unread.md" \
+    --json "$T/unread.json"
+expect_err "warning: cannot read $B/openshoe_gx2 (Not a directory): its walks are not evaluated" "... warned with the reason"
+grep -q "^Cannot read \`$B/openshoe_gx2\` (Not a directory): its walks are not evaluated.$" "$T/unread.md" &&
+    ! grep -q "No walks found in \`$B/openshoe_gx2\`" "$T/unread.md" && json "$T/unread.json" 'j["failed_runs"] == 1' &&
+    pass "... said in its section, a failed run" || fail "unreadable folder: $(grep -i 'gx2`' "$T/unread.md")"
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null 2>&1; then
+    rm "$B/openshoe_gx2"
+    mkdir -p "$B/openshoe_gx2" "$T/unread_out"
+    still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+    chmod 000 "$B/openshoe_gx2"
+    chmod 755 "$T"; chmod 777 "$T/unread_out"; chmod -R a+rX "$B/openshoe_square2"
+    expect_exit 1 "eval as another user: a data set folder without read permission" \
+        setpriv --reuid=65534 --regid=65534 --clear-groups "$H" eval --no-experiments --no-plots --data "$B" \
+        --out "$T/unread_out/r.md"
+    expect_err "warning: cannot read $B/openshoe_gx2 (Permission denied)" "... warned with the reason"
+    grep -q "^Cannot read \`$B/openshoe_gx2\` (Permission denied)" "$T/unread_out/r.md" &&
+        pass "... said in its section" || fail "folder without permission: $(grep -i 'gx2`' "$T/unread_out/r.md")"
+    chmod 755 "$B/openshoe_gx2"
+else
+    echo "SKIP eval with a data set folder without read permission: needs root and setpriv to run as another user"
+fi
+rm -rf "$B"
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
