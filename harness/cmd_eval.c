@@ -2047,6 +2047,13 @@ int hx_cmd_eval(int argc, char **argv)
                 hx_error("eval", "the figures' directory %s is not a directory", ev.plot_dir);
                 return HX_EXIT_IO;
             }
+            if (access(ev.plot_dir, W_OK | X_OK) != 0) {
+                /* there, but no picture can be made in it (each is drawn
+                 * beside its name and renamed onto it): refused here, not
+                 * an error per figure in a run that ended with exit 0 */
+                hx_error("eval", "cannot write in the figures' directory %s (%s)", ev.plot_dir, strerror(errno));
+                return HX_EXIT_IO;
+            }
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
                 hx_warn("eval", "no figures: gnuplot is not installed (apt-get install gnuplot-nox)");
             } else {

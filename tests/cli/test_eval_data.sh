@@ -863,5 +863,25 @@ else
 fi
 rm -rf "$B"
 
+# --- a figures' directory that is there but cannot be written in: found before the run (exit 3), results.md not
+# touched (the run went ahead, then each of the six figures said "error: cannot write .../img/eval-gx2.png
+# (Permission denied)", exit 0). Run as another user (root writes in any directory)
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1; then
+    B="$T/roimg"
+    mkdir -p "$B/data/openshoe_gx2" "$B/md/img"
+    still "$B/data/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+    echo "kept" >"$B/md/r.md"
+    chmod 755 "$T"; chmod -R a+rX "$B"; chmod 777 "$B/md"; chmod 666 "$B/md/r.md"; chmod 555 "$B/md/img"
+    expect_exit 3 "eval as another user: a figures' directory not writable" \
+        setpriv --reuid=65534 --regid=65534 --clear-groups "$H" eval --no-experiments --data "$B/data" --out "$B/md/r.md"
+    expect_err "^harness eval: error: cannot write in the figures' directory $B/md/img (Permission denied)$" "... said"
+    [ "$(cat "$B/md/r.md")" = "kept" ] && ! grep -q "cannot write .*eval-gx2.png" "$T/err" &&
+        pass "... before the run: results.md not touched" || fail "figures' directory not writable: $(head -c 300 "$T/err")"
+    chmod 755 "$B/md/img"
+    rm -rf "$B"
+else
+    echo "SKIP eval with a figures' directory not writable: needs root, setpriv and gnuplot to run as another user"
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
