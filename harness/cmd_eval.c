@@ -1616,6 +1616,37 @@ static const char *met(int ok)
     return ok ? "met" : "**not met**";
 }
 
+/* The command that wrote results.md, as a shell reads it back (in a
+ * malloc'd buffer, to free()): `./bin/harness eval` and argv, whole, after
+ * `FNAV_DATA_DIR=DIR` when that variable named the data (env_data, or
+ * NULL), so that the line rerun reads the same data. */
+static char *eval_command(int argc, char **argv, char *env_data)
+{
+    static const char k_cmd[] = "./bin/harness eval";
+    size_t size = sizeof k_cmd + 32, i;
+    char *buf, *prefix;
+    /* an argument's worst case: every character a ' written '\'', quoted,
+     * after a space */
+    for (i = 0; i < (size_t)argc; i++) {
+        size += 4 * strlen(argv[i]) + 3;
+    }
+    if (env_data != NULL) {
+        size += 4 * strlen(env_data) + 3 + sizeof "FNAV_DATA_DIR=";
+    }
+    buf = (char *)ev_calloc(size, 1);
+    prefix = (char *)ev_calloc(size, 1);
+    if (env_data != NULL) {
+        hx_command_line(prefix, size, "", 1, &env_data); /* " DIR", quoted as an argument */
+        memmove(prefix + sizeof "FNAV_DATA_DIR=" - 1, prefix + 1, strlen(prefix + 1) + 1);
+        memcpy(prefix, "FNAV_DATA_DIR=", sizeof "FNAV_DATA_DIR=" - 1);
+        strcat(prefix, " ");
+    }
+    strcat(prefix, k_cmd);
+    hx_command_line(buf, size, prefix, argc, argv);
+    free(prefix);
+    return buf;
+}
+
 /* A target's status: judged only when its data set was found. */
 static const char *target(int have_data, int ok)
 {
@@ -1901,7 +1932,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_args_t a;
     hx_nav_opts_t o;
     ev_t ev;
-    char err[HX_ERR_SIZE], cmdline[1024], zupt_run[96];
+    char err[HX_ERR_SIZE], *cmdline, *env_data = NULL, zupt_run[96];
     const char *out_path, *json_path, *data;
     char md_path[PATH_MAX + 1];
     closure_t gx2, gx2_200, gx2_100;
@@ -1954,7 +1985,7 @@ int hx_cmd_eval(int argc, char **argv)
     exp = !hx_flag(&a, "--no-experiments");
     data = hx_arg(&a, "--data");
     if (data == NULL) {
-        data = getenv("FNAV_DATA_DIR");
+        data = env_data = getenv("FNAV_DATA_DIR");
     }
     if (data == NULL || *data == '\0') {
         data = "../shared/data";
@@ -2086,7 +2117,6 @@ int hx_cmd_eval(int argc, char **argv)
         other3 = (double *)ev_calloc(2 * (size_t)nother, sizeof *other3);
         other_hz = other3 + nother;
     }
-    hx_command_line(cmdline, sizeof cmdline, "./bin/harness eval", argc, argv);
     {
         /* progress: one run per walk or trial and configuration */
         ev_name_t *names;
@@ -2144,6 +2174,7 @@ int hx_cmd_eval(int argc, char **argv)
     } else {
         snprintf(zupt_run, sizeof zupt_run, "%g ms (`min_zupt_cycle` 0)", 1e3 * (double)ev.cfg.stance.min_zupt_s);
     }
+    cmdline = eval_command(argc, argv, env_data != NULL && *env_data != '\0' ? env_data : NULL);
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
                    "rerun it to reproduce them. Data: `%s` (MANIFEST.md). Configuration: profile `%s`, "
@@ -2154,6 +2185,7 @@ int hx_cmd_eval(int argc, char **argv)
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
             ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
             ev.cfg.settle ? "on" : "off", zupt_run);
+    free(cmdline);
 
     fprintf(ev.md, "## openshoe_gx2: return to start (closed loops, 250 Hz)\n\n"
                    "Error of the last stance mid-point from the first, as a fraction of the step-to-step path "

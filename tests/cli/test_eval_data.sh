@@ -883,5 +883,24 @@ else
     echo "SKIP eval with a figures' directory not writable: needs root, setpriv and gnuplot to run as another user"
 fi
 
+# --- the command results.md names is the one that ran: the data named by $FNAV_DATA_DIR in front of it (left
+# out, the line rerun read ../shared/data), a single-quoted directory quoted; and a command longer than 1,023
+# bytes whole (it was cut there without a mark)
+B="$T/cmd data'x"
+mkdir -p "$B/openshoe_gx2"
+still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+FNAV_DATA_DIR="$B" "$H" eval --no-experiments --no-plots --out "$T/cmd.md" >/dev/null 2>&1
+[ "$(sed -n 3p "$T/cmd.md")" = "Written by \`FNAV_DATA_DIR='$T/cmd data'\\''x' ./bin/harness eval --no-experiments --no-plots --out $T/cmd.md\` (float32 build). Every number below comes from that command;" ] ||
+    [ "$(sed -n 3p "$T/cmd.md")" = "Written by \`FNAV_DATA_DIR='$T/cmd data'\\''x' ./bin/harness eval --no-experiments --no-plots --out $T/cmd.md\` (float64 build). Every number below comes from that command;" ] &&
+    pass "eval with \$FNAV_DATA_DIR: the command named with it" || fail "FNAV_DATA_DIR command: $(sed -n 3p "$T/cmd.md")"
+FNAV_DATA_DIR="$B" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/cmd2.md" >/dev/null 2>&1
+grep -q "^Written by \`./bin/harness eval --no-experiments --no-plots --data '$T/cmd data'" "$T/cmd2.md" &&
+    pass "... not when --data named the data" || fail "--data over FNAV_DATA_DIR: $(sed -n 3p "$T/cmd2.md")"
+J="$T$(printf '/.%.0s' $(seq 600))/cmd.json"
+"$H" eval --no-experiments --no-plots --data "$B" --out "$T/cmd3.md" --json "$J" >/dev/null 2>&1
+grep -qF -- "--json $J\` (float" "$T/cmd3.md" && pass "a command of over 1,023 bytes named whole" ||
+    fail "long command: $(sed -n 3p "$T/cmd3.md" | tail -c 100)"
+rm -rf "$B"
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
