@@ -1647,10 +1647,12 @@ static char *eval_command(int argc, char **argv, char *env_data)
     return buf;
 }
 
-/* A target's status: judged only when its data set was found. */
-static const char *target(int have_data, int ok)
+/* A target's status: judged only when its data set gave a result; "not
+ * run (failed)" when its files were found but every run failed (not "no
+ * data", as if absent), "no data" when none was found. */
+static const char *target(int found, int have_data, int ok)
 {
-    return have_data ? met(ok) : "no data";
+    return have_data ? met(ok) : found ? "not run (failed)" : "no data";
 }
 
 /* The ipol detection target's status: "nothing evaluated" when no expert
@@ -1933,10 +1935,12 @@ int hx_cmd_eval(int argc, char **argv)
     hx_nav_opts_t o;
     ev_t ev;
     char err[HX_ERR_SIZE], *cmdline, *env_data = NULL, zupt_run[96];
+    int manifest;
     const char *out_path, *json_path, *data;
     char md_path[PATH_MAX + 1];
     closure_t gx2, gx2_200, gx2_100;
     double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
+    int xs_found = 0, xl_found = 0;            /* those walks were found (their run may have failed) */
     ev_name_t *xio;
     char (*other)[300]; /* "set/name" */
     double *xio3, *other3, *other_hz;
@@ -2175,12 +2179,18 @@ int hx_cmd_eval(int argc, char **argv)
         snprintf(zupt_run, sizeof zupt_run, "%g ms (`min_zupt_cycle` 0)", 1e3 * (double)ev.cfg.stance.min_zupt_s);
     }
     cmdline = eval_command(argc, argv, env_data != NULL && *env_data != '\0' ? env_data : NULL);
+    {
+        char mpath[EV_PATH_SIZE];
+        snprintf(mpath, sizeof mpath, "%s/MANIFEST.md", ev.data);
+        manifest = is_file(mpath); /* the data's description, said absent when it is */
+    }
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
-                   "rerun it to reproduce them. Data: `%s` (MANIFEST.md). Configuration: profile `%s`, "
+                   "rerun it to reproduce them. Data: `%s` (%s). Configuration: profile `%s`, "
                    "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s, "
                    "shortest ZUPT run %s (docs/navigation.md).\n\n",
-            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.data, ev.cfg.profile.name,
+            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.data, manifest ? "MANIFEST.md" : "no MANIFEST.md",
+            ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
             ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
@@ -2225,6 +2235,8 @@ int hx_cmd_eval(int argc, char **argv)
             char vs[32], cell[EV_CELL_SIZE];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
+            xs_found |= strcmp(xio[i], "short_walk.csv") == 0;
+            xl_found |= strcmp(xio[i], "long_walk.csv") == 0;
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
                 not_run_row(&ev, 1, md_cell(xio[i], cell, sizeof cell), 9, note);
@@ -2598,17 +2610,17 @@ int hx_cmd_eval(int argc, char **argv)
     {
         char v[96];
         fprintf(ev.md, "| openshoe_gx2 horizontal median <= 0.35 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.h_pct_med),
-                target(gx2.n, gx2.h_pct_med <= 0.35));
+                target(gx2.files > 0, gx2.n, gx2.h_pct_med <= 0.35));
         fprintf(ev.md, "| openshoe_gx2 3-D median <= 0.6 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_med),
-                target(gx2.n, gx2.d3_pct_med <= 0.6));
+                target(gx2.files > 0, gx2.n, gx2.d3_pct_med <= 0.6));
         fprintf(ev.md, "| openshoe_gx2 3-D worst <= 1.2 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_max),
-                target(gx2.n, gx2.d3_pct_max <= 1.2));
+                target(gx2.files > 0, gx2.n, gx2.d3_pct_max <= 1.2));
         fprintf(ev.md, "| footprints median final-stride error <= 2 %% | %s | %s |\n",
-                fmt_pct(v, sizeof v, fp.final_pct_med), target(fp.n, fp.final_pct_med <= 2.0));
+                fmt_pct(v, sizeof v, fp.final_pct_med), target(fp.files > 0, fp.n, fp.final_pct_med <= 2.0));
         fprintf(ev.md, "| xio short 3-D < 82 mm | %s | %s |\n", fmt_mm(v, sizeof v, xs),
-                target(isfinite(xs), xs < 0.082));
+                target(xs_found, isfinite(xs), xs < 0.082));
         fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
-                target(isfinite(xl), xl < 0.421));
+                target(xl_found, isfinite(xl), xl < 0.421));
         if (ip.trials > 0 && ip.expected == 0) {
             snprintf(v, sizeof v, "no expert swing to evaluate, %d spurious", ip.spurious);
         } else if (ip.trials > 0) {
@@ -2618,7 +2630,7 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
-                ip.trials > 0 ? ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0) : target(0, 0));
+                ip.trials > 0 ? ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0) : target(ip.files > 0, 0, 0));
         if (ip.trials > 0 && ip.expected == 0) {
             snprintf(v, sizeof v, "no expert swing to evaluate");
         } else if (ip.trials > 0 && ip.n_fo > 0) {
@@ -2629,7 +2641,7 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
-                ip.trials == 0         ? target(0, 0)
+                ip.trials == 0         ? target(ip.files > 0, 0, 0)
                 : ip.expected == 0     ? "nothing evaluated"
                                        : met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }

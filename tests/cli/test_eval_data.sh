@@ -902,5 +902,19 @@ grep -qF -- "--json $J\` (float" "$T/cmd3.md" && pass "a command of over 1,023 b
     fail "long command: $(sed -n 3p "$T/cmd3.md" | tail -c 100)"
 rm -rf "$B"
 
+# --- a data set found whose runs all failed: its targets read "not run (failed)", not "no data" as if absent;
+# and a data directory without a MANIFEST.md is not said to have one ("Data: `DIR` (MANIFEST.md)")
+B="$T/failset"
+mkdir -p "$B/xio_ngimu_gait"
+head -c 5000 /dev/urandom >"$B/xio_ngimu_gait/short_walk.csv"
+expect_exit 1 "eval: xio's short walk unreadable" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/failset.md"
+grep -q "^| xio short 3-D < 82 mm | - | not run (failed) |$" "$T/failset.md" &&
+    grep -q "^| xio long 3-D < 421 mm | - | no data |$" "$T/failset.md" &&
+    pass "a set found whose run failed: not run (failed); one absent: no data" ||
+    fail "failed set's target: $(grep '^| xio' "$T/failset.md")"
+grep -q "Data: \`$B\` (no MANIFEST.md)" "$T/failset.md" && pass "no MANIFEST.md: said" ||
+    fail "no MANIFEST.md: $(grep -o 'Data: [^.]*' "$T/failset.md")"
+rm -rf "$B"
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
