@@ -648,6 +648,7 @@ void hx_traj_free(hx_traj_t *t)
 {
     free(t->f);
     free(t->ev);
+    free(t->in_long);
     memset(t, 0, sizeof *t);
 }
 
@@ -1859,6 +1860,48 @@ static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt, hx_format_
     }
 }
 
+/* --rate: the input's gaps before the resampler closes them up (the
+ * navigator sees a uniform grid): those over 1.5 input periods counted,
+ * the longest interval, and the ends of those over HX_NAV_LONG_GAP_S kept
+ * for the motion-gap summary; a time jump (the resampler's rule) is none,
+ * the navigator sees it; exact repeats left out as the resampler drops
+ * them. -1: no memory. */
+static int in_gaps(const hx_log_t *in, double fs, double max_gap_s, hx_traj_t *t)
+{
+    const double per = fs > 0.0 ? 1.0 / fs : 0.0;
+    const double jump_s = max_gap_s > 1.5 * per ? max_gap_s : 1.5 * per;
+    size_t i, prev = 0, cap = 0;
+    for (i = 1; i < in->n; i++) {
+        double dt;
+        if (in->t_ns[i] <= in->t_ns[prev]) {
+            continue;
+        }
+        dt = 1e-9 * (double)(in->t_ns[i] - in->t_ns[prev]);
+        if (dt > t->in_longest_s) {
+            t->in_longest_s = dt;
+        }
+        if (dt > 1.5 * per && !(dt > jump_s)) {
+            t->in_gaps++;
+            if (dt > HX_NAV_LONG_GAP_S) {
+                if (t->n_in_long == cap) {
+                    const size_t nc = cap ? 2u * cap : 64u;
+                    int64_t(*p)[2] = (int64_t(*)[2])realloc(t->in_long, nc * sizeof *p);
+                    if (p == NULL) {
+                        return -1;
+                    }
+                    t->in_long = p;
+                    cap = nc;
+                }
+                t->in_long[t->n_in_long][0] = in->t_ns[prev];
+                t->in_long[t->n_in_long][1] = in->t_ns[i];
+                t->n_in_long++;
+            }
+        }
+        prev = i;
+    }
+    return 0;
+}
+
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
@@ -1909,6 +1952,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         }
         if (hx_nav_resample(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs, err, err_size) != 0) {
             hx_log_free(&raw);
+            return -1;
+        }
+        if (traj != NULL && in_gaps(&raw, fs, (double)cfg->max_gap_s, traj) != 0) {
+            hx_log_free(&raw);
+            hx_log_free(&res);
+            snprintf(err, err_size, "out of memory");
             return -1;
         }
         if (traj != NULL) {
@@ -2460,10 +2509,37 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
                 continue;
             }
             s->motion_s += dt;
-            if (dt > 1.5 * per && dt > HX_NAV_LONG_GAP_S) {
+            if (t->in_rate_hz <= 0.0 && dt > 1.5 * per && dt > HX_NAV_LONG_GAP_S) {
                 s->gap_lost_s += dt - per;
                 s->long_gaps++;
                 s->longest_motion_gap_s = dt > s->longest_motion_gap_s ? dt : s->longest_motion_gap_s;
+            }
+        }
+        if (t->in_rate_hz > 0.0) {
+            /* resampled (--rate): the grid is uniform, its samples made up
+             * across the input's gaps, so the long gaps are the input's
+             * (hx_traj_t in_long) that overlap a frame interval counted in
+             * motion_s above: its motion is no better measured */
+            size_t g, j = first + 1;
+            const double in_per = 1.0 / t->in_rate_hz;
+            for (g = 0; g < t->n_in_long; g++) {
+                const int64_t a = t->in_long[g][0], b = t->in_long[g][1];
+                const double dt = 1e-9 * (double)(b - a);
+                while (j < t->n && t->f[j].t_ns <= a) {
+                    j++;
+                }
+                for (i = j; i < t->n && t->f[i - 1].t_ns < b; i++) {
+                    const double fdt = 1e-9 * (double)(t->f[i].t_ns - t->f[i - 1].t_ns);
+                    if (!(fdt > 0.0) ||
+                        ((t->f[i].flags & FNAV_FRAME_STANCE) && (t->f[i - 1].flags & FNAV_FRAME_STANCE)) ||
+                        (t->max_gap_s > 0.0 && fdt > t->max_gap_s && fdt > 1.5 * per)) {
+                        continue;
+                    }
+                    s->gap_lost_s += dt - in_per;
+                    s->long_gaps++;
+                    s->longest_motion_gap_s = dt > s->longest_motion_gap_s ? dt : s->longest_motion_gap_s;
+                    break;
+                }
             }
         }
     }
@@ -2741,8 +2817,17 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         fprintf(f, "config            %s\n", cfg);
     }
     if (t->in_rate_hz > 0.0) {
-        fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
-                t->rate_hz, t->resample_dropped_dups);
+        fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)",
+                t->in_rate_hz, t->rate_hz, t->resample_dropped_dups);
+        if (t->n_in_long > 0) {
+            /* the input lost samples (an interval over HX_NAV_LONG_GAP_S)
+             * that the resampler closes up: the timing line below is the
+             * grid's, the motion-gap note the input's (without such gaps
+             * the line is as it was; the JSON's input_gaps has the count) */
+            fprintf(f, "; the input has %ld gap%s, longest interval %.1f ms", t->in_gaps, t->in_gaps == 1 ? "" : "s",
+                    1e3 * t->in_longest_s);
+        }
+        fputc('\n', f);
     }
     fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
             t->rate_src, t->rate_src[0] ? ")" : "", t->window);
@@ -2951,6 +3036,12 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddItemToObject(root, "rate_assumed_hz", num(t->rate_assumed_hz > 0.0 ? t->rate_assumed_hz : (double)NAN));
+    if (t->in_rate_hz > 0.0) {
+        /* --rate: the input's own gaps, closed up by the resampler (health's
+         * are the grid's) */
+        cJSON_AddNumberToObject(root, "input_gaps", (double)t->in_gaps);
+        cJSON_AddItemToObject(root, "input_longest_interval_s", num(t->in_longest_s));
+    }
     cJSON_AddNumberToObject(root, "window_samples", t->window);
     if (t->have_config) {
         /* the configuration that ran, as the summary's config line (not

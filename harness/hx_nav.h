@@ -112,6 +112,16 @@ typedef struct {
     int zupt_max_n;              /**< the longest shortest ZUPT run the look-ahead allows (lag + 1, samples; 0: not known) */
     double in_rate_hz;           /**< input rate before resampling (0 if not resampled) */
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
+    /** --rate: the input's own gaps, which the resampler closes up (the
+     *  navigator sees none of them; hx_nav_summarize's motion gaps are
+     *  these). in_gaps: the intervals over 1.5 input periods, time jumps
+     *  not counted; in_longest_s: the input's longest interval, s; in_long:
+     *  the stamps at the ends of the gaps over HX_NAV_LONG_GAP_S, in order
+     *  (n_in_long of them; freed by hx_traj_free) */
+    long in_gaps;
+    double in_longest_s;
+    int64_t (*in_long)[2];
+    size_t n_in_long;
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
     char rate_src[192];          /**< where rate_hz came from, for the summary's rate line ("": not said) */

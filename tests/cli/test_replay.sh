@@ -716,6 +716,16 @@ sys.exit(0 if abs(g["motion_s"] - motion) < 0.05 and abs(g["lost_s"] - lost) < 0
          and abs(g["longest_s"] - longest) < 1e-6 else 1)
 PYEOF
 then pass "motion_gaps agree with a recount"; else fail "motion_gaps recount: $(cat "$T/pyerr")"; fi
+# ... and resampled: --rate closes the holes up into a uniform grid (timing
+# '0 gaps', longest interval 10 ms), but the motion inside is no better
+# measured; the note and motion_gaps are the input's gaps that overlap the
+# frames in motion, the resampled line and the JSON give the input's gaps
+# (they went: no note, unreliable false, health.gaps 0)
+expect_exit 0 "a walk with 50 ms holes, --rate 100" "$H" replay "$T/gappy.csv" --rate 100 --json "$T/gappy_r.json"
+expect_out_re "^note +1[0-9]\.[0-9] % of the time in motion is lost in [0-9]+ gaps longer than 20 ms \(longest 5[0-9]\.[0-9] ms\): .*position and heading are unreliable" "--rate: the input's lost samples in motion are noted"
+expect_out_re "^resampled +[0-9.]+ Hz \(1 / the median interval\) -> 100\.0 Hz \([0-9]+ duplicate time stamps dropped\); the input has [0-9]+ gaps, longest interval [0-9]+\.[0-9] ms$" "--rate: the resampled line names the input's gaps"
+json "$T/gappy_r.json" 'j["motion_gaps"]["unreliable"] is True and 0.15 < j["motion_gaps"]["lost_fraction"] < 0.2 and j["health"]["gaps"] == 0 and j["input_gaps"] > 100 and 0.05 < j["input_longest_interval_s"] < 0.07' &&
+    pass "--rate: motion_gaps and input_gaps are the input's" || fail "--rate motion_gaps: $(cat "$T/pyerr")"
 awk -F, 'NR == 1 || ($1 + 0.1) % 0.3 >= 0.012' "$T/unclipped.csv" > "$T/gappy12.csv"
 expect_exit 0 "a walk with 12 ms holes" "$H" replay "$T/gappy12.csv"
 if grep -q "of the time in motion is lost" "$T/out"; then fail "12 ms holes noted as unreliable"; else pass "no note for 12 ms holes"; fi
