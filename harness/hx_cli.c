@@ -611,6 +611,7 @@ void hx_progress_start(hx_progress_t *p, const char *label, double total)
     p->total = total > 0.0 ? total : 1.0;
     p->t_start = hx_now_s();
     p->t_last = p->t_start;
+    p->t_origin = p->t_start;
     p->tty = isatty(fileno(stderr));
     p->last_decile = 0;
 }
@@ -669,7 +670,7 @@ void hx_progress_end(hx_progress_t *p)
     g_line_open = 0; /* the line below ends it */
     if (p->shown) {
         /* on a terminal the blanks clear the rest of the longer progress line */
-        fprintf(stderr, "%s%s: done in %.1f s%s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start,
+        fprintf(stderr, "%s%s: done in %.1f s%s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_origin,
                 p->tty ? "                        " : "");
     }
 }

@@ -164,6 +164,7 @@ typedef struct {
     int last_decile;
     int shown;
     int tty;
+    double t_origin; /**< "done in" counts from here: t_start (hx_progress_start), or earlier work's start */
 } hx_progress_t;
 
 void hx_progress_start(hx_progress_t *p, const char *label, double total);

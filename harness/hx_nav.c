@@ -456,6 +456,13 @@ static void resample_at(const hx_log_t *in, const size_t *keep, size_t a, size_t
 int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
                     double *in_rate, char *err, size_t err_size)
 {
+    return hx_nav_resample_progress(in, rate_hz, max_gap_s, out, dups, in_rate, NULL, NULL, err, err_size);
+}
+
+int hx_nav_resample_progress(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
+                             double *in_rate, void (*progress)(void *ctx, double frac), void *ctx, char *err,
+                             size_t err_size)
+{
     size_t n = 0, i, k, nout, a, b;
     int64_t gap_ns;
     double fs, fc, period_ns;
@@ -566,6 +573,9 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
             }
             for (j = 0; j < nseg; j++, k++) {
                 const int64_t t = t0 + (int64_t)llround((double)j * period_ns);
+                if (progress != NULL && (k & 4095u) == 0u) {
+                    progress(ctx, (double)k / (double)nout);
+                }
                 out->t_ns[k] = t;
                 out->seq[k] = (uint32_t)k;
                 out->temp[k] = (double)NAN;
@@ -592,6 +602,9 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     out->meta.rate_nominal = 1;
     out->status = FNAV_END;
     free(keep);
+    if (progress != NULL) {
+        progress(ctx, 1.0);
+    }
     return 0;
 }
 
@@ -1902,6 +1915,11 @@ static int in_gaps(const hx_log_t *in, double fs, double max_gap_s, hx_traj_t *t
     return 0;
 }
 
+static void stage_progress(void *ctx, double frac)
+{
+    hx_progress_update((hx_progress_t *)ctx, frac);
+}
+
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
@@ -1916,6 +1934,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     size_t span_n = 0;  /* the input's samples and their first and last stamps (the units check's span; */
     int64_t span_t0 = 0, span_t1 = 0; /* with --rate the input's, not the resampled grid's) */
     int rc = 0;
+    const double t_cmd = hx_now_s(); /* --rate: the progress's "done in" covers the reading and resampling too */
     memset(&pc, 0, sizeof pc);
     pc.quiet_w = -1.0; /* no window yet (quiet_close) */
     memset(&raw, 0, sizeof raw);
@@ -1927,7 +1946,17 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (rate_hz > 0.0) {
         long dups = 0;
         double fs = 0.0;
-        int lrc = hx_log_load(&raw, path, fmt, in_rate, err, err_size);
+        const int show = (flags & HX_REPLAY_PROGRESS) != 0;
+        hx_progress_t stage;
+        char label[64];
+        int lrc;
+        /* the whole log is read, then resampled, before the first sample is
+         * navigated: each stage shows its progress (an hour at 400 Hz took
+         * 5.7 s before the first line) */
+        snprintf(label, sizeof label, "%s: reading", cmd);
+        hx_progress_start(&stage, label, 1.0);
+        lrc = hx_log_load_progress(&raw, path, fmt, in_rate, show ? stage_progress : NULL, &stage, err, err_size);
+        hx_progress_end(&stage); /* prints only what was shown */
         if (lrc < 0) {
             return -1;
         }
@@ -1950,10 +1979,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             span_t0 = raw.t_ns[0];
             span_t1 = raw.t_ns[raw.n - 1u];
         }
-        if (hx_nav_resample(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs, err, err_size) != 0) {
+        snprintf(label, sizeof label, "%s: resampling", cmd);
+        hx_progress_start(&stage, label, 1.0);
+        if (hx_nav_resample_progress(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs,
+                                     show ? stage_progress : NULL, &stage, err, err_size) != 0) {
+            hx_line_break(); /* a progress line left open: the error follows */
             hx_log_free(&raw);
             return -1;
         }
+        hx_progress_end(&stage);
         if (traj != NULL && in_gaps(&raw, fs, (double)cfg->max_gap_s, traj) != 0) {
             hx_log_free(&raw);
             hx_log_free(&res);
@@ -2073,9 +2107,17 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     port.log = hx_logmsg;
     if (pc.progress) {
         hx_progress_start(&pc.prog, cmd, pc.total > 0.0 ? pc.total : 1.0);
+        if (pc.mem != NULL) {
+            pc.prog.t_origin = t_cmd; /* "done in": the whole command, the reading and resampling with it */
+        }
     }
     st = fnav_nav_run(&nav, &port, 0);
     if (pc.progress) {
+        if (pc.mem != NULL) {
+            /* the samples navigated: updates come every 1,024 (hx_read),
+             * so the last line said 90 %, never 100 */
+            hx_progress_update(&pc.prog, (double)pc.n_read);
+        }
         hx_progress_end(&pc.prog);
     }
     if (pc.sink_failed || pc.traj_oom) {

@@ -194,6 +194,12 @@ void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size);
  */
 int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
                     double *in_rate, char *err, size_t err_size);
+/** hx_nav_resample that reports progress(ctx, fraction of the output made,
+ *  0..1) every 4,096 output samples and 1 at the end (progress NULL:
+ *  none), for a progress indicator on long logs. */
+int hx_nav_resample_progress(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
+                             double *in_rate, void (*progress)(void *ctx, double frac), void *ctx, char *err,
+                             size_t err_size);
 
 /* ------------------------------------------------------------ replay */
 

@@ -230,6 +230,15 @@ expect_out_re "^resampled +398\.[0-9] Hz \(1 / the median interval\) -> 100\.0 H
 expect_out_re "^rate +100\.0 Hz \(resampled\), detector window" "the resampled rate is named"
 expect_exit 0 "replay walk.bin, rate line" "$H" replay vectors/walk.bin
 expect_out_re "^rate +398\.[0-9] Hz \(the stance detector's estimate: 1 / the median of its first 32 intervals\), detector window" "the detector's rate is named as its estimate"
+# the progress of --rate reaches 100 % before "done in" (updates every 1,024
+# samples left the last line at 90 % or below, never 100). A reader that
+# waits 3 s before it drains the trajectory holds the navigation past the
+# 1 s after which progress appears
+"$H" sim --motion stand:3,walk:60 --rate 400 --out "$T/w60.bin" >/dev/null 2>&1
+"$H" replay "$T/w60.bin" --quiet --rate 100 --out - 2>"$T/err" | (sleep 3; cat >/dev/null)
+expect_err "^replay: done in" "--rate progress on a long log"
+if grep '^replay: *[0-9]* % (' "$T/err" | tail -n 1 | grep -q '^replay: 100 % ('; then pass "--rate progress: the last line says 100 %"
+else fail "--rate progress: the last line is not 100 %: $(tr '\n' '|' <"$T/err")"; fi
 # a time jump (100 s) stays one under --rate: the resampler's grid starts
 # again after it instead of making up 10,000 samples across it
 awk -F, 'NR == 1 { print; next } NR > 8000 { $1 = $1 + 100 } { print }' OFS=, "$T/walk_full.csv" > "$T/walk_jump.csv"
