@@ -1981,13 +1981,14 @@ else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
 # a judged walk without a single stride (a still log under a gx2 name) is a
-# failed run, not a closure of 0: exit 1, its targets "no data"
+# failed run, not a closure of 0: exit 1, its targets "not run (failed)" (the
+# data set is there: "no data" is for one that is absent)
 mkdir -p "$T/still/openshoe_gx2"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0.01,0.02,9.81,0.001,0,0\n", i / 200 }' \
     > "$T/still/openshoe_gx2/still_data_inert.txt"
 expect_exit 1 "eval: a judged walk with no stride fails the run" "$H" eval --no-experiments --data "$T/still" --out "$T/still.md"
 expect_err "no stride detected: no closure to judge" "eval says why the walk has no closure"
-if grep -q "| openshoe_gx2 3-D worst <= 1.2 % | - | no data |" "$T/still.md"; then pass "no closure is not judged met"; else fail "a still walk judged: $(grep 'worst' "$T/still.md")"; fi
+if grep -q "| openshoe_gx2 3-D worst <= 1.2 % | - | not run (failed) |" "$T/still.md"; then pass "no closure is not judged met"; else fail "a still walk judged: $(grep 'worst' "$T/still.md")"; fi
 expect_exit 4 "eval without data" "$H" eval --data /nonexistent --out "$T/x.md"
 expect_exit 2 "eval refuses --rate" "$H" eval --rate 100 --data /nonexistent
 expect_err "runs the rate experiment itself" "eval says why --rate is refused"
