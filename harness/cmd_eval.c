@@ -248,6 +248,17 @@ static int list_set(ev_t *ev, const char *sub, const char *const *suf, int nsuf,
 /* A section's data set folder that could not be read (list_set): said in
  * results.md ("Cannot read DIR (reason)."), after lead; 1 when it was, 0
  * when the folder is one to say "No walks found" of. */
+static int set_unreadable(const ev_t *ev, const char *sub)
+{
+    int i;
+    for (i = 0; i < ev->n_unreadable; i++) {
+        if (strcmp(ev->unreadable[i], sub) == 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static int folder_unreadable(ev_t *ev, const char *sub, const char *lead)
 {
     int i;
@@ -1650,9 +1661,17 @@ static char *eval_command(int argc, char **argv, char *env_data)
 /* A target's status: judged only when its data set gave a result; "not
  * run (failed)" when its files were found but every run failed (not "no
  * data", as if absent), "no data" when none was found. */
+/* found: 0 the data set is absent, 1 there, 2 its folder could not be
+ * read (set_unreadable: it read "no data", as an absent one) */
 static const char *target(int found, int have_data, int ok)
 {
-    return have_data ? met(ok) : found ? "not run (failed)" : "no data";
+    return have_data ? met(ok) : found == 2 ? "not run (cannot read)" : found ? "not run (failed)" : "no data";
+}
+
+/* target()'s found for the data set folder sub with files found */
+static int set_found(const ev_t *ev, const char *sub, int files)
+{
+    return files > 0 ? 1 : set_unreadable(ev, sub) ? 2 : 0;
 }
 
 /* The ipol detection target's status: "nothing evaluated" when no expert
@@ -2610,17 +2629,17 @@ int hx_cmd_eval(int argc, char **argv)
     {
         char v[96];
         fprintf(ev.md, "| openshoe_gx2 horizontal median <= 0.35 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.h_pct_med),
-                target(gx2.files > 0, gx2.n, gx2.h_pct_med <= 0.35));
+                target(set_found(&ev, "openshoe_gx2", gx2.files), gx2.n, gx2.h_pct_med <= 0.35));
         fprintf(ev.md, "| openshoe_gx2 3-D median <= 0.6 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_med),
-                target(gx2.files > 0, gx2.n, gx2.d3_pct_med <= 0.6));
+                target(set_found(&ev, "openshoe_gx2", gx2.files), gx2.n, gx2.d3_pct_med <= 0.6));
         fprintf(ev.md, "| openshoe_gx2 3-D worst <= 1.2 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_max),
-                target(gx2.files > 0, gx2.n, gx2.d3_pct_max <= 1.2));
+                target(set_found(&ev, "openshoe_gx2", gx2.files), gx2.n, gx2.d3_pct_max <= 1.2));
         fprintf(ev.md, "| footprints median final-stride error <= 2 %% | %s | %s |\n",
-                fmt_pct(v, sizeof v, fp.final_pct_med), target(fp.files > 0, fp.n, fp.final_pct_med <= 2.0));
+                fmt_pct(v, sizeof v, fp.final_pct_med), target(set_found(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", fp.files), fp.n, fp.final_pct_med <= 2.0));
         fprintf(ev.md, "| xio short 3-D < 82 mm | %s | %s |\n", fmt_mm(v, sizeof v, xs),
-                target(xs_found, isfinite(xs), xs < 0.082));
+                target(set_found(&ev, "xio_ngimu_gait", xs_found), isfinite(xs), xs < 0.082));
         fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
-                target(xl_found, isfinite(xl), xl < 0.421));
+                target(set_found(&ev, "xio_ngimu_gait", xl_found), isfinite(xl), xl < 0.421));
         if (ip.trials > 0 && ip.expected == 0) {
             snprintf(v, sizeof v, "no expert swing to evaluate, %d spurious", ip.spurious);
         } else if (ip.trials > 0) {
@@ -2630,7 +2649,7 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
-                ip.trials > 0 ? ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0) : target(ip.files > 0, 0, 0));
+                ip.trials > 0 ? ipol_judged(&ip, ip.missed == 0 && ip.spurious == 0) : target(set_found(&ev, "ipol_gait_xsens", ip.files), 0, 0));
         if (ip.trials > 0 && ip.expected == 0) {
             snprintf(v, sizeof v, "no expert swing to evaluate");
         } else if (ip.trials > 0 && ip.n_fo > 0) {
@@ -2641,7 +2660,7 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(v, sizeof v, "-");
         }
         fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
-                ip.trials == 0         ? target(ip.files > 0, 0, 0)
+                ip.trials == 0         ? target(set_found(&ev, "ipol_gait_xsens", ip.files), 0, 0)
                 : ip.expected == 0     ? "nothing evaluated"
                                        : met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }

@@ -82,11 +82,14 @@ fnav_status_t fnav_cm_port_send_info(fnav_cm_port_ctx_t *ctx, const fnav_wire_in
 /** Start a SysTick time base: an interrupt every floor(@p core_hz / 1000)
  *  core clocks, about 1 ms (ARM only; does nothing on the host). The port
  *  defines SysTick_Handler; a board that needs SysTick for itself builds
- *  the port with -DFNAV_CM_OWN_SYSTICK and calls fnav_cm_systick_tick() from
- *  its own handler at each SysTick interrupt. The stamps count core clocks,
+ *  the port with -DFNAV_CM_OWN_SYSTICK, keeps this reload (an RTOS that
+ *  reprograms SYST_RVR gets wrong stamps) and calls fnav_cm_systick_tick()
+ *  from its own handler at each SysTick interrupt. SysTick's priority must
+ *  be at least that of every interrupt that reads the time (a reader above
+ *  it can preempt the handler mid-update). The stamps count core clocks,
  *  so they are exact over any run at any clock (a period is not taken for
- *  1 ms: fnav_cm_time.h). fnav_cm_ticks_ns() is right in any context, the
- *  sample-ready interrupt included (a wrap whose interrupt is still pending
+ *  1 ms: fnav_cm_time.h). fnav_cm_ticks_ns() is right in any context of
+ *  SysTick's priority or below, the sample-ready interrupt included (a wrap whose interrupt is still pending
  *  is counted), and its 64-bit ns do not wrap. */
 void fnav_cm_systick_start(uint32_t core_hz);
 /** One SysTick period more on the time base (called by SysTick_Handler). */

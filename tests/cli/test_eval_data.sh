@@ -845,6 +845,9 @@ expect_err "warning: cannot read $B/openshoe_gx2 (Not a directory): its walks ar
 grep -q "^Cannot read \`$B/openshoe_gx2\` (Not a directory): its walks are not evaluated.$" "$T/unread.md" &&
     ! grep -q "No walks found in \`$B/openshoe_gx2\`" "$T/unread.md" && json "$T/unread.json" 'j["failed_runs"] == 1' &&
     pass "... said in its section, a failed run" || fail "unreadable folder: $(grep -i 'gx2`' "$T/unread.md")"
+# its targets "not run (cannot read)", not "no data" (the review's: the section said it, the Targets did not)
+[ "$(grep -c '^| openshoe_gx2 .* | - | not run (cannot read) |$' "$T/unread.md")" -eq 3 ] &&
+    pass "... its targets not run (cannot read)" || fail "unreadable folder's targets: $(grep '^| openshoe_gx2' "$T/unread.md")"
 if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null 2>&1; then
     rm "$B/openshoe_gx2"
     mkdir -p "$B/openshoe_gx2" "$T/unread_out"
