@@ -259,13 +259,47 @@ static int set_unreadable(const ev_t *ev, const char *sub)
     return 0;
 }
 
+/* a followed by b (NULL: nothing) as a Markdown code span: delimited by
+ * one backtick more than the longest run of backticks inside, and padded
+ * with a space where the text starts or ends with one (CommonMark), so a
+ * path or a command holding a backtick is one span, as it reads. */
+static void md_code(FILE *f, const char *a, const char *b)
+{
+    const char *part[2];
+    size_t run = 0, longest = 0, k;
+    int i, pad;
+    char first, last = '\0';
+    part[0] = a;
+    part[1] = b != NULL ? b : "";
+    first = a[0] != '\0' ? a[0] : part[1][0];
+    for (i = 0; i < 2; i++) {
+        const char *c;
+        for (c = part[i]; *c != '\0'; c++) {
+            run = *c == '`' ? run + 1 : 0;
+            longest = run > longest ? run : longest;
+            last = *c;
+        }
+    }
+    pad = first == '`' || last == '`';
+    for (k = 0; k <= longest; k++) {
+        fputc('`', f);
+    }
+    fprintf(f, "%s%s%s%s", pad ? " " : "", part[0], part[1], pad ? " " : "");
+    for (k = 0; k <= longest; k++) {
+        fputc('`', f);
+    }
+}
+
 static int folder_unreadable(ev_t *ev, const char *sub, const char *lead)
 {
     int i;
     for (i = 0; i < ev->n_unreadable; i++) {
         if (strcmp(ev->unreadable[i], sub) == 0) {
-            fprintf(ev->md, "%sCannot read `%s/%s` (%s): its walks are not evaluated.\n\n", lead, ev->data, sub,
-                    strerror(ev->unreadable_err[i]));
+            char sub_path[EV_PATH_SIZE];
+            snprintf(sub_path, sizeof sub_path, "/%s", sub);
+            fprintf(ev->md, "%sCannot read ", lead);
+            md_code(ev->md, ev->data, sub_path);
+            fprintf(ev->md, " (%s): its walks are not evaluated.\n\n", strerror(ev->unreadable_err[i]));
             return 1;
         }
     }
@@ -2204,11 +2238,15 @@ int hx_cmd_eval(int argc, char **argv)
         manifest = is_file(mpath); /* the data's description, said absent when it is */
     }
     fprintf(ev.md, "# footnav results\n\n");
-    fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
-                   "rerun it to reproduce them. Data: `%s` (%s). Configuration: profile `%s`, "
+    fputs("Written by ", ev.md);
+    md_code(ev.md, cmdline, NULL);
+    fprintf(ev.md, " (float%s build). Every number below comes from that command;\nrerun it to reproduce them. Data: ",
+            FNAV_USE_DOUBLE ? "64" : "32");
+    md_code(ev.md, ev.data, NULL);
+    fprintf(ev.md, " (%s). Configuration: profile `%s`, "
                    "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s, "
                    "shortest ZUPT run %s (docs/navigation.md).\n\n",
-            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.data, manifest ? "MANIFEST.md" : "no MANIFEST.md",
+            manifest ? "MANIFEST.md" : "no MANIFEST.md",
             ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
@@ -2222,9 +2260,9 @@ int hx_cmd_eval(int argc, char **argv)
     closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ev.cfg, 0.0, 1, &gx2, NULL);
     if (gx2.n == 0) {
         if (!folder_unreadable(&ev, "openshoe_gx2", "\n")) {
-            fprintf(ev.md, gx2.files > 0 ? "\nNo walk in `%s/openshoe_gx2` gave a result (table).\n\n"
-                                         : "\nNo walks found in `%s/openshoe_gx2`.\n\n",
-                    ev.data);
+            fputs(gx2.files > 0 ? "\nNo walk in " : "\nNo walks found in ", ev.md);
+            md_code(ev.md, ev.data, "/openshoe_gx2");
+            fputs(gx2.files > 0 ? " gave a result (table).\n\n" : ".\n\n", ev.md);
         }
     } else {
         fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
@@ -2240,7 +2278,9 @@ int hx_cmd_eval(int argc, char **argv)
     fprintf(ev.md, "## xio_ngimu_gait: return to start (closed loops, ~400 Hz, irregular timing)\n\n");
     if (nxio == 0) {
         if (!folder_unreadable(&ev, "xio_ngimu_gait", "")) {
-            fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
+            fputs("No walks found in ", ev.md);
+            md_code(ev.md, ev.data, "/xio_ngimu_gait");
+            fputs(".\n\n", ev.md);
         }
     } else {
         char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
@@ -2295,17 +2335,24 @@ int hx_cmd_eval(int argc, char **argv)
     if (nother == 0) {
         const int u0 = folder_unreadable(&ev, "openshoe_c_820hz", ""), u1 = folder_unreadable(&ev, "openshoe_square2", "");
         if (!u0 && !u1) {
-            fprintf(ev.md, "No walks found in `%s/openshoe_c_820hz` or `%s/openshoe_square2`.\n\n", ev.data,
-                    ev.data);
+            fputs("No walks found in ", ev.md);
+            md_code(ev.md, ev.data, "/openshoe_c_820hz");
+            fputs(" or ", ev.md);
+            md_code(ev.md, ev.data, "/openshoe_square2");
+            fputs(".\n\n", ev.md);
         } else if (!u0 || !u1) {
-            fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data, u0 ? "openshoe_square2" : "openshoe_c_820hz");
+            fputs("No walks found in ", ev.md);
+            md_code(ev.md, ev.data, u0 ? "/openshoe_square2" : "/openshoe_c_820hz");
+            fputs(".\n\n", ev.md);
         }
     } else {
         /* one of the two sets absent: said, as every other absent set */
         for (i = 0; i < 2; i++) {
             const char *sub = i == 0 ? "openshoe_c_820hz" : "openshoe_square2";
             if (nother_set[i] == 0 && !folder_unreadable(&ev, sub, "")) {
-                fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data, sub);
+                fputs("No walks found in ", ev.md);
+                md_code(ev.md, ev.data, i == 0 ? "/openshoe_c_820hz" : "/openshoe_square2");
+                fputs(".\n\n", ev.md);
             }
         }
         char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
@@ -2351,9 +2398,9 @@ int hx_cmd_eval(int argc, char **argv)
     footprints(&ev, &ev.cfg, 0.0, 1, &fp, &fp_walk);
     if (fp.n == 0) {
         if (!folder_unreadable(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", "\n")) {
-            fprintf(ev.md, fp.files > 0 ? "\nNo walk in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints` gave a result (table).\n\n"
-                                        : "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n",
-                    ev.data);
+            fputs(fp.files > 0 ? "\nNo walk in " : "\nNo walks found in ", ev.md);
+            md_code(ev.md, ev.data, "/pyshoe_vicon_llio/own_3dmgx5_footprints");
+            fputs(fp.files > 0 ? " gave a result (table).\n\n" : ".\n\n", ev.md);
         }
     } else {
         fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
@@ -2370,9 +2417,9 @@ int hx_cmd_eval(int argc, char **argv)
     vicon(&ev, &ev.cfg, 1, &vi, NULL);
     if (vi.n == 0) {
         if (!folder_unreadable(&ev, "pyshoe_vicon_llio/vicon_3dmgx3", "\n")) {
-            fprintf(ev.md, vi.files > 0 ? "\nNo trial in `%s/pyshoe_vicon_llio/vicon_3dmgx3` gave a result (table).\n\n"
-                                        : "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n",
-                    ev.data);
+            fputs(vi.files > 0 ? "\nNo trial in " : "\nNo trials found in ", ev.md);
+            md_code(ev.md, ev.data, "/pyshoe_vicon_llio/vicon_3dmgx3");
+            fputs(vi.files > 0 ? " gave a result (table).\n\n" : ".\n\n", ev.md);
         }
     } else {
         fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
@@ -2394,9 +2441,9 @@ int hx_cmd_eval(int argc, char **argv)
     ipol(&ev, &ev.cfg, 1, &ip);
     if (ip.trials == 0) {
         if (!folder_unreadable(&ev, "ipol_gait_xsens", "\n")) {
-            fprintf(ev.md, ip.files > 0 ? "\nNo trial in `%s/ipol_gait_xsens` gave a result (table).\n\n"
-                                        : "\nNo trials found in `%s/ipol_gait_xsens`.\n\n",
-                    ev.data);
+            fputs(ip.files > 0 ? "\nNo trial in " : "\nNo trials found in ", ev.md);
+            md_code(ev.md, ev.data, "/ipol_gait_xsens");
+            fputs(ip.files > 0 ? " gave a result (table).\n\n" : ".\n\n", ev.md);
         }
     } else {
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "

@@ -919,5 +919,19 @@ grep -q "Data: \`$B\` (no MANIFEST.md)" "$T/failset.md" && pass "no MANIFEST.md:
     fail "no MANIFEST.md: $(grep -o 'Data: [^.]*' "$T/failset.md")"
 rm -rf "$B"
 
+# --- a data directory whose name holds backticks: each path is one Markdown code span, delimited by more
+# backticks than any run inside, padded where it ends with one (a single backtick ended the span at the
+# name's own backtick)
+B="$T/tick\`s\`\`"
+mkdir -p "$B/openshoe_gx2"
+still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+"$H" eval --no-experiments --no-plots --data "$B" --out "$T/tick.md" >/dev/null 2>&1
+grep -qF "Data: \`\`\` $B \`\`\` (no MANIFEST.md)" "$T/tick.md" &&
+    grep -qF "No walks found in \`\`\`$B/xio_ngimu_gait\`\`\`." "$T/tick.md" &&
+    grep -q "^Written by \`\`\`\./bin/harness eval .*\`\`\` (float" "$T/tick.md" &&
+    pass "a data path with backticks: one code span each" ||
+    fail "backticks in the data path: $(sed -n 3p "$T/tick.md"; grep -F 'xio_ngimu_gait' "$T/tick.md" | head -1)"
+rm -rf "$B"
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
