@@ -116,15 +116,22 @@ static int key_suggest(const char *u)
 }
 
 /* text as it may be quoted in a message: at most n-1 bytes, a control
- * character as '?' (a key is the file's text, printed to a terminal) */
+ * character as '?' (a key is the file's text, printed to a terminal): an
+ * ASCII one, and a C1 one in UTF-8 (C2 80-9F, as name_control() below:
+ * U+009B is a terminal's CSI) */
 static void quote_text(char *dst, size_t n, const char *text)
 {
-    size_t i;
-    for (i = 0; i + 1u < n && text[i] != '\0'; i++) {
+    size_t i, o = 0;
+    for (i = 0; o + 1u < n && text[i] != '\0'; i++) {
         const unsigned char c = (unsigned char)text[i];
-        dst[i] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+        if (c == 0xc2u && (unsigned char)text[i + 1] >= 0x80u && (unsigned char)text[i + 1] <= 0x9fu) {
+            i++; /* the two bytes of one character, one '?' */
+            dst[o++] = '?';
+        } else {
+            dst[o++] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+        }
     }
-    dst[i] = '\0';
+    dst[o] = '\0';
 }
 
 /* Index of the first control character of a name, or -1: ASCII's and
@@ -233,8 +240,11 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
     return hx_profile_read_warn(path, p, NULL, 0, err, err_size);
 }
 
-/* The unknown-key warnings kept in a warn buffer; the rest are counted */
+/* The unknown-key warnings kept in a warn buffer; the rest are counted,
+ * and so is a line the buffer has no room for (a long path): room is kept
+ * for the count's line, so an unknown key is never ignored without a word */
 #define WARN_LINES_MAX 8
+#define WARN_COUNT_ROOM 64 /* the count's line but the path */
 
 int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t warn_size, char *err,
                          size_t err_size)
@@ -244,8 +254,8 @@ int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t
     char hint[128];
     long len;
     int lineno = 0, have_magic = 0, have_rate = 0, have_name = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
-    int i, nunknown = 0, nwarned = 0;
-    size_t wlen = 0;
+    int i, nunknown = 0, nwarned = 0, nshown = 0;
+    size_t wlen = 0, keep = strlen(path) + WARN_COUNT_ROOM;
     unknown_t unknown[UNKNOWN_KEPT];
     if (warn_size == 0u) {
         warn = NULL;
@@ -436,10 +446,11 @@ int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t
                                      "%s:%d: unknown key '%s' ignored (a key of your own starts with x_)\n", path, lineno,
                                      q);
                     }
-                    if (m > 0 && (size_t)m < warn_size - wlen) {
+                    if (m > 0 && (size_t)m + keep < warn_size - wlen) {
                         wlen += (size_t)m;
+                        nshown++;
                     } else {
-                        warn[wlen] = '\0'; /* a line that does not fit is left out whole */
+                        warn[wlen] = '\0'; /* a line that does not fit is left out whole, and counted */
                     }
                 }
                 nwarned++;
@@ -447,11 +458,14 @@ int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t
         }
     }
     fclose(f);
-    if (warn != NULL && nwarned > WARN_LINES_MAX) {
-        int m = snprintf(warn + wlen, warn_size - wlen, "%s: %d more unknown keys ignored\n", path,
-                         nwarned - WARN_LINES_MAX);
+    if (warn != NULL && nwarned > nshown) {
+        int m = snprintf(warn + wlen, warn_size - wlen, "%s: %d %sunknown key%s ignored\n", path, nwarned - nshown,
+                         nshown > 0 ? "more " : "", nwarned - nshown > 1 ? "s" : "");
         if (!(m > 0 && (size_t)m < warn_size - wlen)) {
-            warn[wlen] = '\0';
+            /* a path too long for the buffer: the count without it (the
+             * caller's buffer holds one of PATH_MAX) */
+            snprintf(warn, warn_size, "%d unknown key%s ignored in the profile file\n", nwarned,
+                     nwarned > 1 ? "s" : "");
         }
     }
     /* no line to name: the file's name alone, and the line of an unknown
@@ -639,7 +653,7 @@ static int profile_warned(const char *path)
 
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size)
 {
-    char msg[320], warn[1024];
+    char msg[320], warn[8192]; /* WARN_LINES_MAX lines and the count's, of a path of PATH_MAX */
     int implausible;
     if (fnav_profile_by_name(p, name_or_path) == FNAV_OK) {
         return 0;

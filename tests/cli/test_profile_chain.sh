@@ -295,6 +295,23 @@ expect_exit 0 "montecarlo with unknown keys in the profile" "$H" montecarlo --se
     --profile "$T/unk.profile"
 [ "$(grep -c "unknown key 'gyro_nosie'" "$T/err")" -eq 1 ] && pass "montecarlo: the unknown key warned about once" ||
     fail "montecarlo unknown-key warnings: $(grep -c "unknown key" "$T/err")"
+# more unknown keys than are listed: the rest counted; a path too long for the warning buffer (1,024 bytes)
+# left every line out and said nothing; a C1 control in a key (U+009B, a terminal's CSI) quoted as '?'
+{ cat "$T/ds.profile"; for i in 1 2 3 4 5 6 7 8 9 10; do printf 'y_%d = 1\n' "$i"; done; } >"$T/many.profile"
+expect_exit 0 "replay with 10 unknown keys" "$H" replay vectors/walk.bin --quiet --profile "$T/many.profile"
+[ "$(grep -c "unknown key 'y_" "$T/err")" -eq 8 ] && expect_err "many.profile: 2 more unknown keys ignored$" \
+    "10 unknown keys: 8 listed, 2 counted" || fail "10 unknown keys: $(cat "$T/err")"
+LP=$T
+for c in p q r s t u v w x y z o; do LP="$LP/$(printf "$c%.0s" $(seq 250))"; done # 3,000 bytes and more
+mkdir -p "$LP"
+{ cat "$T/ds.profile"; printf 'y_1 = 1\ny_2 = 1\n'; } >"$LP/long.profile"
+expect_exit 0 "replay with unknown keys in a profile of a long path" "$H" replay vectors/walk.bin --quiet \
+    --profile "$LP/long.profile"
+expect_err "long.profile:13: unknown key 'y_1' ignored" "an unknown key warned with a path of over 3,000 bytes"
+expect_err "long.profile: 1 more unknown key ignored$" "... the line without room counted"
+{ cat "$T/ds.profile"; printf 'bad\302\233[31mkey = 1\n'; } >"$T/c1.profile"
+expect_exit 0 "replay with a C1 control in an unknown key" "$H" replay vectors/walk.bin --quiet --profile "$T/c1.profile"
+expect_err "unknown key 'bad?\[31mkey' ignored" "a C1 control in a key quoted as '?'"
 # a line of exactly 511 characters is still read (the limit is inclusive)
 { cat "$T/ds.profile"; printf '# '; awk 'BEGIN { for (i = 0; i < 509; i++) printf "x"; print "" }'; } >"$T/edge.profile"
 expect_exit 0 "a profile with a 511-character comment line" "$H" replay vectors/walk.bin --quiet --profile "$T/edge.profile"
