@@ -169,6 +169,12 @@ typedef struct {
     int hdr_has_info;
     int rate_changed;             /* an INFO frame changed the rate during the session */
     int told_name;                /* control characters in the INFO's text were said */
+    int told_temp;                /* a temperature the INFO in force denies was said (and discarded) */
+    /* what the recorded samples carried, for the header's bits 1 and 2 at
+     * the end: a temperature (under an INFO that announced it, or before
+     * any INFO), and a sample without the sensor counter the INFO announces */
+    int temp_recorded, seq_undeclared;
+    int hdr_has_temp, hdr_has_seq; /* the header's bits 1 and 2 as written at the first sample */
     int traj_partial;             /* out of memory: the summary covers the first outputs */
     fnav_wire_info_t info;
     fnav_wire_status_t status;
@@ -416,11 +422,17 @@ static void recording_meta(const live_t *L, hx_meta_t *meta)
     if (L->have_info) {
         meta->rate_hz = L->rate_changed ? 0.0 : L->info.rate_hz;
         meta->rate_nominal = (L->info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) != 0u && !L->rate_changed;
-        meta->has_temp = (L->info.flags & FNAV_WIRE_INFO_TEMP) != 0u;
-        meta->has_seq = (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u;
+        /* the bits cover the session's records, not the last INFO alone:
+         * a temperature recorded under an INFO that announced it stays
+         * readable after an INFO without (the reader reads none under a
+         * header whose bit 1 is clear), and a counter is the sensor's only
+         * when every sample recorded carried it under an INFO saying so */
+        meta->has_temp = (L->info.flags & FNAV_WIRE_INFO_TEMP) != 0u || L->temp_recorded;
+        meta->has_seq = (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u && !L->seq_undeclared;
         snprintf(meta->sensor, sizeof meta->sensor, "%s", L->info.sensor);
         snprintf(meta->axes, sizeof meta->axes, "%s", L->info.axes);
     } else {
+        meta->has_temp = L->temp_recorded; /* the samples' own word, with no INFO to deny it */
         snprintf(meta->sensor, sizeof meta->sensor, "unknown (no INFO frame)");
     }
     snprintf(meta->source, sizeof meta->source, "harness live");
@@ -433,6 +445,8 @@ static int open_recording(live_t *L)
     L->hdr_info = L->info;
     L->hdr_has_info = L->have_info;
     recording_meta(L, &meta);
+    L->hdr_has_temp = meta.has_temp;
+    L->hdr_has_seq = meta.has_seq;
     L->rec = hx_writer_open(L->record_path, HX_FMT_BIN, &meta, 1, err, sizeof err);
     if (L->rec == NULL) {
         hx_error(CMD, "%s", err);
@@ -449,13 +463,13 @@ static int open_recording(live_t *L)
 static int update_recording_header(live_t *L)
 {
     hx_meta_t meta;
+    recording_meta(L, &meta);
     if (L->rec == NULL || !L->have_info ||
         (L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && L->hdr_info.flags == L->info.flags &&
          strcmp(L->hdr_info.sensor, L->info.sensor) == 0 && strcmp(L->hdr_info.axes, L->info.axes) == 0 &&
-         !L->rate_changed)) {
+         !L->rate_changed && L->hdr_has_temp == meta.has_temp && L->hdr_has_seq == meta.has_seq)) {
         return 0;
     }
-    recording_meta(L, &meta);
     if (hx_writer_rewrite_header(L->rec, &meta) != FNAV_OK) {
         end_status_line(L);
         hx_warn(CMD, "%s: the header could not be rewritten with the INFO frame that came later (%s); it says what "
@@ -493,6 +507,9 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     hist_push(&L->hist, (double)(s->t_ns - L->t_first_ns) * 1e-9, L->acc_norm, L->gyr_norm);
     nav_push(L, s);
     if (L->record_path != NULL && !L->rec_failed) {
+        /* before the header is written at the first sample, which takes them */
+        L->temp_recorded |= (s->flags & FNAV_SAMPLE_HAS_TEMP) != 0u;
+        L->seq_undeclared |= (s->flags & FNAV_SAMPLE_HAS_SEQ) == 0u;
         if (L->rec == NULL) {
             end_status_line(L);
         }
@@ -747,6 +764,26 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
              * arrival so that the recording stays readable to its end */
             st = fnav_sample_check(&s);
             crc = payload_crc(f); /* a copy is the same bytes */
+        }
+        if (st == FNAV_OK && L->have_info) {
+            /* the INFO in force says what the samples carry (its bits 1
+             * and 2): a temperature or a counter it does not announce is
+             * not kept (a temperature recorded under a header without bit
+             * 1 is unread, "a writer's fault?") */
+            if ((s.flags & FNAV_SAMPLE_HAS_TEMP) != 0u && (L->info.flags & FNAV_WIRE_INFO_TEMP) == 0u) {
+                s.flags &= ~(uint32_t)FNAV_SAMPLE_HAS_TEMP;
+                if (!L->told_temp) {
+                    char msg[200];
+                    L->told_temp = 1;
+                    snprintf(msg, sizeof msg, "sample frame seq %u carries a temperature, but the sender's INFO "
+                             "frame says its samples have none (flags bit 1): the temperatures are not recorded",
+                             (unsigned)f->seq);
+                    warn_limited(L, msg);
+                }
+            }
+            if ((L->info.flags & FNAV_WIRE_INFO_SEQ) == 0u) {
+                s.flags &= ~(uint32_t)FNAV_SAMPLE_HAS_SEQ;
+            }
         }
         if (st == FNAV_OK && L->samples > 0u && (unsigned)f->seq == L->last_frame_seq && s.t_ns == L->t_last_ns &&
             s.seq == L->last_sample_seq && crc == L->last_crc) {
@@ -1274,11 +1311,18 @@ int hx_cmd_live(int argc, char **argv)
 
     /* the recording first: it must be complete whatever happens below */
     if (update_recording_header(&L)) {
+        const int info_changed = !L.hdr_has_info || L.hdr_info.rate_hz != L.info.rate_hz ||
+                                 L.hdr_info.flags != L.info.flags || strcmp(L.hdr_info.sensor, L.info.sensor) != 0 ||
+                                 strcmp(L.hdr_info.axes, L.info.axes) != 0;
+        const int no_seq = (L.info.flags & FNAV_WIRE_INFO_SEQ) != 0u && L.seq_undeclared;
         fprintf(stderr, "harness live: %s: the header was written again at the end with the sender's last INFO "
-                        "frame (%s)\n",
+                        "frame (%s%s%s)\n",
                 L.record_path, !L.hdr_has_info ? "none had come by the first sample"
                                : L.rate_changed ? "it changed during the session; the rate given as unknown"
-                                                : "it changed during the session");
+                               : info_changed   ? "it changed during the session"
+                                                : "",
+                info_changed && no_seq ? "; " : "",
+                no_seq ? "samples came without the sensor counter it announces: the header gives none" : "");
     }
     if (L.rec != NULL) {
         char werr[HX_ERR_SIZE];

@@ -598,6 +598,26 @@ expect_rc "$LIVE_RC" 0 "live when the INFO changes the rate"
 grep_in "$T/live.err" "the sender's INFO frame seq 101 changes its rate from 400 to 100 Hz" "the change is warned"
 reads_back rec_rc.bin 200 "the recording reads back whole"
 if grep -q "(nominal)" "$T/info.out"; then fail "the header keeps a nominal rate that changed"; else pass "the header gives no nominal rate"; fi
+# the header's temperature and counter bits cover what the recording holds:
+# an INFO that stops announcing a temperature mid-session keeps the ones
+# recorded under it readable (the header said none, and info called it a
+# writer's fault); a temperature the INFO in force says the samples lack is
+# discarded, said once; a counter some samples came without is not the
+# header's (info counted a running index into a counter as drops)
+live_case tempoff rec_toff.bin 5
+expect_rc "$LIVE_RC" 0 "live when the INFO stops announcing a temperature"
+reads_back rec_toff.bin "200 (with temperature)" "the temperatures recorded under the first INFO are read"
+if grep -q "carries a temperature" "$T/info.out"; then fail "the recording's header denies its temperatures"; cat "$T/info.out"; else pass "no temperature warning on the recording"; fi
+live_case tempdenied rec_tden.bin 5
+expect_rc "$LIVE_RC" 0 "live when the samples carry a temperature the INFO does not announce"
+grep_in "$T/live.err" "sample frame seq 1 carries a temperature, but the sender's INFO frame says its samples have none (flags bit 1): the temperatures are not recorded" "the temperatures discarded are said"
+reads_back rec_tden.bin 300 "the recording reads back without temperatures"
+if grep -q "carries a temperature" "$T/info.out"; then fail "the recording holds temperatures its header denies"; cat "$T/info.out"; else pass "no temperature warning on the recording"; fi
+live_case seqon rec_sqon.bin 5
+expect_rc "$LIVE_RC" 0 "live when the INFO starts announcing a sensor counter mid-session"
+grep_in "$T/live.err" "the header was written again at the end with the sender's last INFO frame (it changed during the session; samples came without the sensor counter it announces: the header gives none)" "the counter bit cleared is said"
+reads_back rec_sqon.bin 200 "the recording reads back"
+if grep -q "^drops" "$T/info.out"; then fail "a running index read as the sensor's counter"; cat "$T/info.out"; else pass "no counter drops from the samples before the counter"; fi
 # the sender's text with a line break and an escape sequence (clear screen)
 live_case ctlname rec_cn.bin 5
 grep_in "$T/live.out" 'live: sender: IMU?"x"?\[2J, 400 Hz' "the sender's name is printed as one line of text"

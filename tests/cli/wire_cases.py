@@ -45,6 +45,12 @@ usage: wire_cases.py CASE OUT
   firstahead_loss INFO at rate 0 (counter flag), the first sample stamped
             1000 s ahead, 299 more with frame 5 lost on the link, END
   firstahead_end the first sample stamped 1000 s ahead, 5 more, END
+  tempoff   INFO flags 7 (temperature, counter), 100 samples at 25 degC, INFO
+            flags 5 (no temperature), 100 samples without one, END
+  tempdenied INFO flags 5 (no temperature), 300 samples that carry one, END
+  seqon     INFO flags 1 (no counter), 100 samples whose seq is a running
+            index from 0, INFO flags 5 (counter), 100 samples with the
+            sensor's counter from 5000, END
 """
 import math
 import os
@@ -199,6 +205,21 @@ def main():
         if case == 'firstahead_loss':
             del fr[4]
         b = (info(0.0) if case == 'firstahead_loss' else b'') + b''.join(fr) + end(n + 1, n)
+    elif case in ('tempoff', 'tempdenied', 'seqon'):
+        def smp(k, fseq, flags, temp, c=None):
+            return frame(SAMPLE, fseq, sample_payload(k * DT_NS, k if c is None else c, flags, (0.0, 0.0, 9.81),
+                                                      (0.0, 0.0, 0.0), temp))
+        if case == 'tempoff':
+            b = info(400.0, 7) + b''.join(smp(k, k + 1, 3, 25.0) for k in range(100))
+            b += info(400.0, 5, 'test sender', 101) + b''.join(smp(k, k + 2, 2, math.nan) for k in range(100, 200))
+            b += end(202, 200)
+        elif case == 'tempdenied':
+            b = info(400.0, 5) + b''.join(smp(k, k + 1, 3, 25.0) for k in range(300)) + end(301, 300)
+        else:
+            b = info(400.0, 1) + b''.join(smp(k, k + 1, 0, 0.0) for k in range(100))
+            b += info(400.0, 5, 'test sender', 101) + b''.join(smp(k, k + 2, 2, 0.0, 4900 + k)
+                                                              for k in range(100, 200))
+            b += end(202, 200)
     else:
         sys.exit('unknown case ' + case)
     with open(out, 'wb') as f:
