@@ -64,9 +64,10 @@ static const hx_spec_t k_spec = {
     "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
     "when the port disappears (the recording stays intact in every case).\n"
     "Exit status: 0 complete (END and every sample, or Ctrl-C with no frame\n"
-    "lost), 1 samples were lost (drops, bad frames), none arrived, or the port\n"
-    "went away, 2 usage, 3 the port or the recording could not be opened or\n"
-    "written.",
+    "lost), 1 samples were lost or refused (drops, bad frames, bad samples, a\n"
+    "bad INFO frame), none arrived, the sender restarted, the port went away or\n"
+    "--timeout ran out, 2 usage, 3 the port, the recording or an output could\n"
+    "not be opened or written.",
     1, 1, k_opts
 };
 
