@@ -171,6 +171,7 @@ typedef struct {
     int rate_changed;             /* an INFO frame changed the rate during the session */
     int told_name;                /* control characters in the INFO's text were said */
     int told_temp;                /* a temperature the INFO in force denies was said (and discarded) */
+    int told_unknown;             /* a frame of a type this receiver does not know was said */
     /* what the recorded samples carried, for the header's bits 1 and 2 at
      * the end: a temperature (under an INFO that announced it, or before
      * any INFO), and a sample without the sensor counter the INFO announces */
@@ -889,8 +890,21 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->have_end = 1;
         }
         break;
+    case FNAV_WIRE_NAV:
+        break; /* from an on-sensor filter: live navigates the samples itself */
     default:
-        break; /* NAV from an on-sensor filter, or a type this receiver does not know */
+        /* a type this receiver does not know: skipped and counted (the
+         * protocol's versioning rule), said once, so that a sender whose
+         * samples come in a newer type is not only "samples missing" */
+        if (!L->told_unknown) {
+            char msg[200];
+            L->told_unknown = 1;
+            snprintf(msg, sizeof msg, "frame seq %u is of type 0x%02x, which this receiver does not know (a newer "
+                     "sender?): such frames are skipped and counted (frames: unknown)", (unsigned)f->seq,
+                     (unsigned)f->type);
+            warn_limited(L, msg);
+        }
+        break;
     }
 }
 

@@ -618,6 +618,13 @@ expect_rc "$LIVE_RC" 0 "live when the INFO starts announcing a sensor counter mi
 grep_in "$T/live.err" "the header was written again at the end with the sender's last INFO frame (it changed during the session; samples came without the sensor counter it announces: the header gives none)" "the counter bit cleared is said"
 reads_back rec_sqon.bin 200 "the recording reads back"
 if grep -q "^drops" "$T/info.out"; then fail "a running index read as the sensor's counter"; cat "$T/info.out"; else pass "no counter drops from the samples before the counter"; fi
+# a frame of a type this receiver does not know (a newer sender's) is
+# skipped and counted, and said once
+live_case newtype rec_nt.bin 5
+expect_rc "$LIVE_RC" 0 "live with a frame of an unknown type among the samples"
+grep_in "$T/live.err" "frame seq 101 is of type 0x06, which this receiver does not know (a newer sender?): such frames are skipped and counted" "the unknown type is said"
+grep_in "$T/live.out" "unknown 1)" "and counted"
+reads_back rec_nt.bin 200 "the samples around it are recorded"
 # the sender's text with a line break and an escape sequence (clear screen)
 live_case ctlname rec_cn.bin 5
 grep_in "$T/live.out" 'live: sender: IMU?"x"?\[2J, 400 Hz' "the sender's name is printed as one line of text"

@@ -48,6 +48,8 @@ usage: wire_cases.py CASE OUT
   tempoff   INFO flags 7 (temperature, counter), 100 samples at 25 degC, INFO
             flags 5 (no temperature), 100 samples without one, END
   tempdenied INFO flags 5 (no temperature), 300 samples that carry one, END
+  newtype   INFO, 100 samples, a frame of type 0x06 (unknown), 100 samples,
+            END
   seqon     INFO flags 1 (no counter), 100 samples whose seq is a running
             index from 0, INFO flags 5 (counter), 100 samples with the
             sensor's counter from 5000, END
@@ -205,6 +207,9 @@ def main():
         if case == 'firstahead_loss':
             del fr[4]
         b = (info(0.0) if case == 'firstahead_loss' else b'') + b''.join(fr) + end(n + 1, n)
+    elif case == 'newtype':
+        b = info(400.0) + samples(100) + frame(6, 101, bytes(45)) + b''.join(
+            frame(SAMPLE, k + 2, still(k)) for k in range(100, 200)) + end(202, 200)
     elif case in ('tempoff', 'tempdenied', 'seqon'):
         def smp(k, fseq, flags, temp, c=None):
             return frame(SAMPLE, fseq, sample_payload(k * DT_NS, k if c is None else c, flags, (0.0, 0.0, 9.81),
