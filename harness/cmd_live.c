@@ -1470,6 +1470,7 @@ int hx_cmd_live(int argc, char **argv)
                                                                      : cJSON_CreateNull());
                 cJSON_AddNumberToObject(link, "frames", (double)s->frames);
                 cJSON_AddNumberToObject(link, "bad_frames", (double)(s->bad_frames - L.cut));
+                cJSON_AddNumberToObject(link, "unknown_frames", (double)L.by_type[0]);
                 cJSON_AddNumberToObject(link, "noise_frames", (double)L.noise);
                 cJSON_AddNumberToObject(link, "cut_frames", (double)L.cut);
                 cJSON_AddNumberToObject(link, "lost_frames", (double)s->lost);

@@ -625,6 +625,14 @@ expect_rc "$LIVE_RC" 0 "live with a frame of an unknown type among the samples"
 grep_in "$T/live.err" "frame seq 101 is of type 0x06, which this receiver does not know (a newer sender?): such frames are skipped and counted" "the unknown type is said"
 grep_in "$T/live.out" "unknown 1)" "and counted"
 reads_back rec_nt.bin 200 "the samples around it are recorded"
+stop_link
+start_link
+start_live --timeout 5 --json "$T/nt.json"
+/usr/bin/python3 tests/cli/wire_cases.py newtype "$T/case.bin" || fail "wire_cases.py newtype"
+timeout 30 cat "$T/case.bin" >"$B"
+wait_live
+if /usr/bin/python3 -c "import json,sys; l=json.load(open(sys.argv[1]))['link']; sys.exit(0 if l['unknown_frames'] == 1 else 1)" "$T/nt.json"; then
+    pass "the JSON's link counts it (unknown_frames)"; else fail "unknown_frames: $(head -c 400 "$T/nt.json")"; fi
 # the sender's text with a line break and an escape sequence (clear screen)
 live_case ctlname rec_cn.bin 5
 grep_in "$T/live.out" 'live: sender: IMU?"x"?\[2J, 400 Hz' "the sender's name is printed as one line of text"
