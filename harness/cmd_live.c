@@ -1046,6 +1046,10 @@ static void plot_async(live_t *L, const char *png)
         size_t i;
         const hist_t *h = &L->hist;
         snprintf(tmp, sizeof tmp, "%s.tmp.png", png);
+        /* a FILE.tmp.png there is a stale one, or a link placed there: it
+         * goes, so that gnuplot writes a file of its own, not through a
+         * link, and the rename moves that file, not the link */
+        (void)unlink(tmp);
         if (moved(&L->traj)) {
             char title[160];
             snprintf(title, sizeof title, "harness live: %u samples, bad %u lost %u", (unsigned)L->samples,

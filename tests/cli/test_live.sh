@@ -251,6 +251,10 @@ fi
 fake_gnuplot "$T/gpwhole"
 printf 'old' >"$T/ptarget.png"
 ln -s "$T/ptarget.png" "$T/plink.png"
+# a link where the picture's temporary file goes: not written through (gnuplot wrote the picture into the
+# file it names, and the rename put the link in the picture's place)
+printf 'keep' >"$T/pvictim"
+ln -s "$T/pvictim" "$T/ptarget.png.tmp.png"
 OLDPATH=$PATH
 PATH="$T/gpwhole:$PATH"
 GP_SCRIPT=$T/gpwhole/script
@@ -264,6 +268,9 @@ expect_rc "$LIVE_RC" 0 "live --plot onto a symlink to a file"
     [ ! -e "$T/ptarget.png.tmp.png" ] && [ ! -e "$T/plink.png.tmp.png" ] &&
     pass "the link stays a link, the file it names holds the picture" ||
     fail "symlink --plot: $(ls -l "$T" | grep -e plink -e ptarget)"
+[ "$(cat "$T/pvictim")" = "keep" ] && [ ! -L "$T/ptarget.png" ] &&
+    pass "a link at FILE.tmp.png is not written through" ||
+    fail "link at the temporary picture: $(head -c 4 "$T/pvictim" | od -An -c); $(ls -l "$T" | grep -e ptarget)"
 
 # --- corrupt frames: skipped, counted, reported; the rest recorded
 start_live --record "$T/rec_c.bin" --timeout 30 --json "$T/live_c.json"
