@@ -543,8 +543,12 @@ void fnav_allan_slopes(const fnav_allan_result_t *r, size_t n, fnav_real_t *slop
             if (!usable(&r[k])) {
                 continue;
             }
-            lx = fnav_log((fnav_real_t)r[k].tau);
-            ly = FNAV_R(0.5) * fnav_log(r[k].avar); /* log ADEV */
+            /* log tau and log ADEV relative to point i (a line's slope
+             * ignores the shift): the logs themselves (ln tau up to 14)
+             * made cnt sxx - sx^2 cancel and lost 1e-3 of the slope in
+             * float */
+            lx = fnav_log((fnav_real_t)r[k].tau / (fnav_real_t)r[i].tau);
+            ly = FNAV_R(0.5) * fnav_log(r[k].avar / r[i].avar);
             sx += lx;
             sy += ly;
             sxx += lx * lx;

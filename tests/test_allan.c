@@ -791,6 +791,65 @@ static void test_slopes_three_points(void **state)
     FNAV_ASSERT_CLOSE(slope[3], 2.0, 1e-5, 0.0);
 }
 
+/* The slopes at long tau, on the default 4-per-octave grid from 2^15 to
+ * 2^20 samples, of an ADEV that is an exact power law (tau^s, s = -1/2 then
+ * +1/2 from 2^17 on: each point's three-point slope is s, or at the bend
+ * the least-squares line through the corner, computed here in long double).
+ * The inputs carry their float rounding: each log ADEV and log tau
+ * difference errs by at most about 2u (u = FNAV_REAL_EPSILON / 2), which
+ * a least-squares line over neighbours at least h apart in log tau turns
+ * into (2 + 2 |s|) u / h; the bound is 8 u / h, h = ln(8/7) (3.6e-6 in
+ * float, 6.6e-15 in double). The slopes summed the uncentred logs (ln tau
+ * up to 13.9, their squares 193) and lost 3.1e-4 here in float (1.1e-12
+ * in double) to the cancellation of cnt sxx - sx^2; on the ADIS16405 logs
+ * (`bin/harness allan LOG --json`) up to 8.4e-4 within the identified
+ * range and 6.6e-3 beyond it against numpy
+ * (scripts/check_allan_psd_real.py). */
+static void test_slopes_long_tau(void **state)
+{
+    static const uint32_t tau[21] = { 32768u,  40960u,  49152u,  57344u,  65536u,  81920u,  98304u,
+                                      114688u, 131072u, 163840u, 196608u, 229376u, 262144u, 327680u,
+                                      393216u, 458752u, 524288u, 655360u, 786432u, 917504u, 1048576u };
+    const double u = (double)FNAV_REAL_EPSILON / 2.0, tol = 8.0 * u / log(8.0 / 7.0);
+    fnav_allan_result_t r[21];
+    fnav_real_t slope[21];
+    long double lx[21], ly[21]; /* the reference in long double: its own rounding far below the bound */
+    int i, k;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 21; i++) {
+        /* ADEV 0.01 (tau / 2^17)^s: continuous at the bend */
+        const double s = tau[i] < 131072u ? -0.5 : 0.5;
+        r[i].tau = tau[i];
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(1e-4 * pow((double)tau[i] / 131072.0, 2.0 * s));
+        lx[i] = logl((long double)tau[i]);
+        ly[i] = 0.5L * logl((long double)r[i].avar); /* the rounded input's own line */
+    }
+    fnav_allan_slopes(r, 21, slope);
+    for (i = 0; i < 21; i++) {
+        const int lo = i > 0 ? i - 1 : 0, hi = i < 20 ? i + 1 : 20;
+        long double sx = 0.0L, sy = 0.0L, sxx = 0.0L, sxy = 0.0L, mx, my;
+        double want;
+        for (k = lo; k <= hi; k++) {
+            sx += lx[k];
+            sy += ly[k];
+        }
+        mx = sx / (long double)(hi - lo + 1);
+        my = sy / (long double)(hi - lo + 1);
+        for (k = lo; k <= hi; k++) {
+            sxx += (lx[k] - mx) * (lx[k] - mx);
+            sxy += (lx[k] - mx) * (ly[k] - my);
+        }
+        want = (double)(sxy / sxx);
+        if (getenv("ALLAN_PER_TAU") != NULL) {
+            printf("slope tau %7u: %.9g want %.9g, |diff| %.2e (bound %.2e)\n", (unsigned)tau[i], (double)slope[i],
+                   want, fabs((double)slope[i] - want), tol);
+        }
+        FNAV_ASSERT_CLOSE(slope[i], want, tol, 0.0);
+    }
+}
+
 /* The paper's BS and t_BS at a minimum on the table's last point: no
  * parabola (it needs a neighbour on each side), BS the last ADEV and t_BS
  * its tau exactly. The entry after the n given is a usable point above the
@@ -2580,6 +2639,7 @@ int main(void)
         cmocka_unit_test(test_chi2_quantile_large),
         cmocka_unit_test(test_edf_flicker_pm_table),
         cmocka_unit_test(test_slopes_three_points),
+        cmocka_unit_test(test_slopes_long_tau),
         cmocka_unit_test(test_paper_min_at_end),
         cmocka_unit_test(test_paper_tau_max),
         cmocka_unit_test(test_pdev_edf),
