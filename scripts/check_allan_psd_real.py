@@ -17,7 +17,9 @@ identification (sigma_v, BS, t_BS, tau, sigma_bias: "The paper's
 identification, as written") and the corrected fit ("Corrected
 identification": weighted least squares of log ADEV, weights 1/sqrt(1/(2 EDF)
 + 0.05^2), scipy's least_squares from a grid of 97 correlation times), both
-recomputed from the double table. The fit takes the table's EDF, except at
+recomputed from the double table, and each row's `slope` ("Noise
+identification": the least-squares line of log ADEV against log tau through
+the row and its neighbours, from the table's own OADEV). The fit takes the table's EDF, except at
 `periodic` tau, where the harness weighs with the slope's quantisation EDF
 (about 5e5: weight 1/0.05 within 0.02 %), taken here as infinite.
 
@@ -37,9 +39,11 @@ Usage: /usr/bin/python3 scripts/check_allan_psd_real.py [--harness bin/harness] 
 (1.5 minutes on the 2-core build machine; exit 1 if a figure passes its limit below, a count or a
 stride differs, or a rounded frequency differs).
 
-Printed on 2026-12-07 (commit 76d1bd5a, float build, `make bin/harness`):
+Printed on 2026-12-07 (float build, `make bin/harness`, with the fix of fnav_allan_slopes):
   allan streaming, 3 logs x 6 channels x 71 tau: OADEV 6.0e-07, ADEV 9.8e-07 (limit 1e-04); counts and strides equal
   allan exact, log 1: OADEV 3.1e-08, ADEV 2.8e-08 (limit 1e-04); counts equal
+  allan slope column: 3.6e-07 streaming, 4.1e-07 exact (absolute; limit 1e-04); 6.6e-03 and 8.8e-03,
+    FAIL, exit 1, before the fix of fnav_allan_slopes (2026-12-07)
   paper identification: 1.3e-05 (az's t_BS, a parabola vertex; limit 1e-04)
   corrected fit (sigma_v, T, sigma_bias): 1.7e-05 (limit 1e-04)
   psd, 50 runs: bins at >= 1e-6 of the largest 7.0e-05 (ipol 3-4_rf gy, Hann 1024 linear, bin 0 at 1.4e-3 of
@@ -48,8 +52,10 @@ Printed on 2026-12-07 (commit 76d1bd5a, float build, `make bin/harness`):
 The script's own last lines, that run:
   allan exact ADEV                 2.8e-08 (limit 1e-04)
   allan exact OADEV                3.1e-08 (limit 1e-04)
+  allan exact slope (absolute)     4.1e-07 (limit 1e-04)
   allan streaming ADEV             9.8e-07 (limit 1e-04)
   allan streaming OADEV            6.0e-07 (limit 1e-04)
+  allan streaming slope (absolute) 3.6e-07 (limit 1e-04)
   corrected fit                    1.7e-05 (limit 1e-04)
   paper identification             1.3e-05 (limit 1e-04)
   psd bandwidth                    3.1e-06 (limit 1e-04)
@@ -181,6 +187,9 @@ def allan(h, csv, tmp, exact):
             note('allan %s ADEV' % kind, abs(r['adev'] / np.sqrt(an * sc) - 1))
             tau.append(r['m'])
             ref.append(ao * sc)
+        lx, ly = np.log(tau), np.log([r['oadev'] for r in ch['table']])
+        for i, r in enumerate(ch['table']):
+            note('allan %s slope (absolute)' % kind, abs(r['slope'] - np.polyfit(lx[max(i - 1, 0):i + 2], ly[max(i - 1, 0):i + 2], 1)[0]))
         q = paper_id(tau, ref, fs, tmax)
         note('paper identification', max(abs(ch['paper'][k] / q[k] - 1) for k in q))
         if not exact:
