@@ -123,6 +123,13 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     o.quiet = hx_flag(&a, "--quiet");
     json = hx_arg(&a, "--json");
     md = hx_arg(&a, "--markdown");
+    {
+        /* one file for both: the Markdown replaced the JSON, exit 0 */
+        static const char *const outs[] = { "--json", "--markdown", NULL };
+        if (hx_output_is_input("simgap-validate", NULL, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     /* a run takes minutes: an output that cannot be written is said now */
     if ((json != NULL && hx_check_writable("simgap-validate", json) != 0) ||
         (md != NULL && hx_check_writable("simgap-validate", md) != 0)) {

@@ -28,6 +28,13 @@ grep -q "^case" "$T/out" && fail "unwritable --markdown: the cases ran first" ||
 [ ! -e "$T/v.json" ] && expect_exit 0 "writable outputs still written" "$H" simgap-validate --cases 1 $FAST --quiet \
     --json "$T/v.json" --markdown "$T/v.md"
 [ -s "$T/v.json" ] && [ -s "$T/v.md" ] && pass "JSON and Markdown written" || fail "outputs missing"
+# --json and --markdown naming one file (also as ./FILE) are a usage error
+# before any case runs: the Markdown replaced the JSON, exit 0
+expect_exit 2 "--json and --markdown on one file" "$H" simgap-validate --cases 1 $FAST --quiet \
+    --json "$T/same.json" --markdown "$T/./same.json"
+expect_err "^harness simgap-validate: error: --json $T/same.json and --markdown $T/./same.json name the same file" \
+    "--json and --markdown on one file said"
+[ ! -e "$T/same.json" ] && pass "--json and --markdown on one file: nothing written" || fail "--json and --markdown on one file: $T/same.json written"
 
 # --seed: sim's range and words (not [0, 2e9], "not an integer"); the case
 # generator's seed is a uint32_t
