@@ -1840,7 +1840,10 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     want = hx_units_want(csv, f_med, 9.80665, wmax, &lay_w);
     free(wm);
     free(fm);
-    if (!bad && r->domain == 1) {
+    /* not on a walk given --static: its spread is the motion's, and
+     * "probably in deg/s (give --units gyro=deg/s)" sent the user to make
+     * its rates 57 times too small (the summary says it looks like a walk) */
+    if (!bad && r->domain == 1 && r->domain_detected == 1) {
         const double spread = static_gyro_spread_rps(log, r->rate_hz);
         if (spread > SG_STATIC_GYRO_SPREAD_RPS) {
             snprintf(msg, sizeof msg,

@@ -405,6 +405,13 @@ expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (give --units gyr
     "a static gyro in deg/s is named, with the --units item"
 expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
 if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
+# a walk in rad/s given --static: its gyro's spread is the motion's, not a
+# unit; it was warned "probably in deg/s (give --units gyro=deg/s)", a remedy
+# that makes its rates 57 times too small. The summary says it looks like a walk
+"$H" sim --motion walk --duration 30 --rate 100 --profile mtx --seed 3 --out "$T/wks.csv" >/dev/null 2>&1 || fail "sim walk for --static"
+expect_exit 0 "a walk in rad/s given --static" "$H" simgap "$T/wks.csv" --quiet --seeds 3 --max-effects 0 --static
+if grep -q "deg/s" "$T/err"; then fail "a walk given --static named as deg/s: $(cat "$T/err")"; else pass "no deg/s warning on a walk given --static"; fi
+expect_out "^domain: static as given (--static); the log looks like a walk" "a walk given --static: said on the summary"
 # the same static log with its time column in milliseconds (100 Hz read as
 # 0.1 Hz): not analysed at 0.1 Hz without a word, as allan and psd name the
 # unit; a warning, the status unchanged
