@@ -18,7 +18,7 @@ static const hx_opt_t k_opts[] = {
     { "--static", NULL, "treat the log as static (default: detected)", 0 },
     { "--walk", NULL, "treat the log as a walk (default: detected)", 0 },
     { "--json", "FILE", "JSON report (schema in docs/simgap.md)", 0 },
-    { "--plot", "DIR", "plots: Allan and PSD real vs twin before and after, innovations", 0 },
+    { "--plot", "DIR", "plots: static logs Allan, PSD and z, real vs twin before and after; walks the innovations", 0 },
     { "--seeds", "N", "twins per model (default 16)", 0 },
     { "--seed", "S", "first simulator seed (default 1); seeds less than 12010 apart may share twins: take seeds "
                      "20000 apart for independent repeats (docs/simgap.md, \"What --seed seeds\")", 0 },
