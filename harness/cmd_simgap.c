@@ -138,6 +138,12 @@ int hx_cmd_simgap(int argc, char **argv)
             }
             return HX_EXIT_IO;
         }
+        if (made) {
+            /* sg_write_plots makes it again: a run that ends before the
+             * plots (an input error, a log without noise, Ctrl-C) left it
+             * made and empty */
+            (void)remove(plot);
+        }
     }
     lr = hx_load_input("simgap", &a, path, &log);
     if (lr < 0) {

@@ -230,6 +230,13 @@ expect_err "^harness simgap: error: .*nf.csv: .*twins do not vary" "noise-free w
 "$H" sim --motion stand:20 --profile none --out "$T/nfs.csv" >/dev/null 2>&1 || fail "sim noise-free still log"
 expect_exit 1 "noise-free still log as a walk" "$H" simgap "$T/nfs.csv" --quiet --seeds 3 --walk
 expect_err "^harness simgap: error: " "noise-free still log as a walk: an error line"
+# a --plot directory made for the check before the diagnosis is not left
+# made and empty by a run that ends before its plots (an input that cannot
+# be read, a log without noise; Ctrl-C alike)
+expect_exit 1 "missing input with --plot" "$H" simgap "$T/nope.csv" --quiet --plot "$T/nopeplot"
+[ ! -e "$T/nopeplot" ] && pass "missing input: no --plot directory left" || fail "missing input: $T/nopeplot left made"
+expect_exit 1 "noise-free walk with --plot" "$H" simgap "$T/nf.csv" --quiet --seeds 3 --plot "$T/nfplot"
+[ ! -e "$T/nfplot" ] && pass "noise-free walk: no --plot directory left" || fail "noise-free walk: $T/nfplot left made"
 
 # incomplete input: the diagnosis runs on the samples before the error, and
 # exit 1 comes with one error line naming the file and line (or record)
