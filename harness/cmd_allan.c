@@ -1061,7 +1061,8 @@ static int read_series(run_t *R, const char *path, int phase, long column)
     errno = 0;
     in.gz = gzopen(path, "rb"); /* a .gz read transparently, as a log is */
     if (in.gz == NULL) {
-        hx_error(CMD, "%s: cannot open (%s)", path, errno != 0 ? strerror(errno) : "gzopen failed");
+        const int e = errno;
+        hx_error(CMD, "%s: cannot open (%s)%s", path, e != 0 ? strerror(e) : "gzopen failed", hx_stdin_hint(path, e));
         return -1;
     }
     (void)gzbuffer(in.gz, 1u << 16);

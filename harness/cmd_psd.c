@@ -818,6 +818,12 @@ int hx_cmd_psd(int argc, char **argv)
                 }
                 return HX_EXIT_IO;
             }
+            if (made) {
+                /* made again when the plots are written: a run that ends
+                 * before them (an input error, Ctrl-C) left it made and
+                 * empty */
+                (void)remove(dir);
+            }
         }
     }
     rc = hx_load_input(CMD, &a, a.pos[0], &log);

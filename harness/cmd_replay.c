@@ -90,7 +90,8 @@ int hx_cmd_replay(int argc, char **argv)
     strides_path = hx_arg(&a, "--strides");
     if (access(a.pos[0], R_OK) != 0) {
         /* before any output is opened (and an existing one emptied) */
-        hx_error("replay", "%s: cannot read (%s)", a.pos[0], strerror(errno));
+        const int e = errno;
+        hx_error("replay", "%s: cannot read (%s)%s", a.pos[0], strerror(e), hx_stdin_hint(a.pos[0], e));
         return HX_EXIT_DATA;
     }
     {

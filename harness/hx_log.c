@@ -5,6 +5,7 @@
 #include "hx_merge.h"
 #include "hx_names.h"
 #include "hx_xsens.h"
+#include "hx_cli.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -2711,6 +2712,16 @@ static int ug_plausible(double v)
     return fabs(v) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2;
 }
 
+const char *hx_stdin_hint(const char *path, int err)
+{
+    static char hint[96];
+    if (strcmp(path, "-") != 0 || err != ENOENT) {
+        return "";
+    }
+    snprintf(hint, sizeof hint, ": for standard input give /dev/stdin (`... | harness %s /dev/stdin`)", hx_cmd_name);
+    return hint;
+}
+
 int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size)
 {
     /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at this
@@ -3438,7 +3449,8 @@ static int spool_pipe_once(const char *path, char *err, size_t err_size)
     }
     in = open(path, O_RDONLY);
     if (in < 0) {
-        snprintf(err, err_size, "%s: cannot open (%s)", path, strerror(errno));
+        const int e = errno;
+        snprintf(err, err_size, "%s: cannot open (%s)%s", path, strerror(e), hx_stdin_hint(path, e));
         return -1;
     }
     tmp = tmpfile();
@@ -3538,7 +3550,8 @@ gzFile hx_gzopen_input(const char *path, char *err, size_t err_size)
         gz = gzopen(path, "rb");
     }
     if (gz == NULL) {
-        snprintf(err, err_size, "%s: cannot open (%s)", path, errno ? strerror(errno) : "gzopen failed");
+        const int e = errno;
+        snprintf(err, err_size, "%s: cannot open (%s)%s", path, e ? strerror(e) : "gzopen failed", hx_stdin_hint(path, e));
     }
     return gz;
 }

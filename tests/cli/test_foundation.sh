@@ -1009,6 +1009,15 @@ expect_exit 1 "a character device as the log" timeout 60 "$H" info /dev/zero
 expect_err "/dev/zero: a character device (a terminal, a serial port), not a log file" "... named"
 expect_exit 1 "/dev/null as the log" "$H" info /dev/null
 expect_err "/dev/null: empty file" "... is an empty file"
+# '-' as the log (no file of that name): the error names the remedy, /dev/stdin, which reads a pipe
+if [ ! -e ./- ]; then
+    for c in info replay allan psd; do
+        expect_exit 1 "$c of '-'" "$H" $c -
+        expect_err "^harness $c: error: -: cannot [a-z]* (No such file or directory): for standard input give /dev/stdin (\`... | harness $c /dev/stdin\`)$" "... the remedy named"
+    done
+    cat vectors/walk.bin | "$H" info /dev/stdin >"$T/out" 2>"$T/err"
+    expect_out "samples     16539" "... which reads the pipe"
+fi
 
 # --json onto a FIFO with a reader: the output pre-check opened and closed
 # it, which handed the reader an end of file, and the JSON's write then

@@ -75,6 +75,10 @@ for o in "--out /nonexistent/dir/p.csv" "--json /nonexistent/dir/p.json" "--plot
     expect_exit 3 "unwritable ${o%% *}, before the work" "$H" psd "$T/tone.csv" $o
     if [ ! -s "$T/out" ]; then pass "unwritable ${o%% *}: nothing computed first"; else fail "unwritable ${o%% *}: the tables were printed first"; fi
 done
+# a --plot DIR made for the check before the work is removed again: a run that ended before the plots (the input
+# missing) left it made and empty
+expect_exit 1 "a missing input with --plot DIR" "$H" psd "$T/missing.csv" --plot "$T/pmiss"
+[ ! -e "$T/pmiss" ] && pass "... the plots' directory not left made and empty" || fail "psd left $T/pmiss made"
 # --round 0: the answer is 2 x bandwidth itself; the output said "rounded up to a multiple of 0 Hz" and "multiples of
 # 0 Hz", and printed the answer to the hertz
 expect_exit 0 "tone, --round 0" "$H" psd "$T/tone.csv" --round 0 --json "$T/r0.json"
