@@ -54,9 +54,10 @@ typedef struct {
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
  * again at every impact; a natural maximum is one event. The rule (two
  * separate runs of two or more samples with distinct stamps exactly at a
- * channel's maximum or minimum) is replay's hx_sat_t, fed the samples as
- * replay reads them, so that the two commands give the same counts; the
- * peaks are the log's own values. */
+ * channel's maximum or minimum, the extremes more than HX_SAT_SPAN_NOISE
+ * times the channel's noise at rest apart) is replay's hx_sat_t, fed the
+ * samples as replay reads them, so that the two commands give the same
+ * counts; the peaks are the log's own values. */
 static void saturation(const hx_log_t *log, long sat[6], double peak[6])
 {
     hx_sat_t st;

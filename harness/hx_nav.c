@@ -645,14 +645,58 @@ void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s)
             st->runn[ch] = 0;
         }
     }
+    for (ch = 0; ch < 6; ch++) {
+        const double v = ch < 3 ? (double)s->accel_mps2[ch] : (double)s->gyro_rps[ch - 3];
+        const double d = st->have ? fabs(v - st->last[ch]) : 0.0;
+        if (d > 0.0 && (st->step[ch] == 0.0 || d < st->step[ch])) {
+            st->step[ch] = d;
+        }
+        st->last[ch] = v;
+        if (st->bn == 0) {
+            st->b0[ch] = v;
+            st->bs[ch] = 0.0;
+            st->bss[ch] = 0.0;
+        }
+        st->bs[ch] += v - st->b0[ch];
+        st->bss[ch] += (v - st->b0[ch]) * (v - st->b0[ch]);
+    }
+    if (++st->bn == HX_SAT_BLOCK) {
+        for (ch = 0; ch < 6; ch++) {
+            const double m = st->bs[ch] / (double)st->bn;
+            const double var = st->bss[ch] / (double)st->bn - m * m;
+            if (!st->have_block || var < st->var_min[ch]) {
+                st->var_min[ch] = var;
+            }
+        }
+        st->have_block = 1;
+        st->bn = 0;
+    }
     st->t_last_ns = s->t_ns;
     st->have = 1;
+}
+
+/* The noise of channel ch at rest (hx_sat_t). */
+static double sat_noise(const hx_sat_t *st, int ch)
+{
+    double var;
+    double sd;
+    if (st->have_block) {
+        var = st->var_min[ch];
+    } else {
+        const double m = st->bn > 0 ? st->bs[ch] / (double)st->bn : 0.0;
+        var = st->bn > 0 ? st->bss[ch] / (double)st->bn - m * m : 0.0;
+    }
+    sd = var > 0.0 ? sqrt(var) : 0.0;
+    return sd > st->step[ch] ? sd : st->step[ch];
 }
 
 long hx_sat_count(const hx_sat_t *st, int ch)
 {
     if (!st->have || ch < 0 || ch >= 6 || st->mx[ch] == st->mn[ch]) {
         return 0; /* a constant channel is no clipping */
+    }
+    if (st->mx[ch] - st->mn[ch] <= HX_SAT_SPAN_NOISE * sat_noise(st, ch)) {
+        return 0; /* extremes within the noise: a still channel's, not a full scale */
     }
     return st->rmx[ch] + st->rmn[ch] >= 2 ? st->cmx[ch] + st->cmn[ch] : 0;
 }

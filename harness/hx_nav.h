@@ -63,15 +63,36 @@ int hx_nav_param_help_requested(int argc, char **argv);
 
 /* ------------------------------------------------------------ trajectory */
 
+/** Samples (distinct stamps) in a block of hx_sat_t's noise at rest. */
+#define HX_SAT_BLOCK 64
+/** A channel's extremes must lie more than this many times its noise at
+ *  rest apart for its flat tops to be clipping (docs/harness.md, "info",
+ *  saturation): a channel spans at most 50 in the 1-s stretches of
+ *  xio_ngimu_gait and openshoe_c_820hz where its flat tops alone call it
+ *  clipped (still or slow), a clipped one at least 1,800
+ *  (tests/cli/test_replay.sh's clipped walk; scripts/sat_span_noise.py). */
+#define HX_SAT_SPAN_NOISE 100.0
+
 /** Flat tops at a channel's extremes, counted sample by sample as `info`
  *  counts them on a whole log (docs/harness.md, "info", saturation): a
  *  channel is saturated when at least two separate runs of two or more
- *  samples with distinct stamps sit exactly at its maximum or minimum. */
+ *  samples with distinct stamps sit exactly at its maximum or minimum and
+ *  its extremes lie more than HX_SAT_SPAN_NOISE times its noise at rest
+ *  apart. The noise at rest is the smallest standard deviation of a block
+ *  of HX_SAT_BLOCK samples (of the first samples while no block is whole),
+ *  at least the smallest change between consecutive samples (the step of a
+ *  quantised channel too still to vary within a block). */
 typedef struct {
     double mx[6], mn[6];     /**< extremes so far (ax..az, gx..gz) */
     long cmx[6], cmn[6];     /**< samples at them */
     long rmx[6], rmn[6];     /**< runs of two or more at them */
     long runx[6], runn[6];   /**< the current run's length at each */
+    double last[6];          /**< the last sample's values */
+    double step[6];          /**< the smallest non-zero change between consecutive samples (0: none yet) */
+    double b0[6], bs[6], bss[6]; /**< the current block: its first value, the sums of the values less it and of their squares */
+    long bn;                 /**< samples in the current block */
+    double var_min[6];       /**< the smallest variance of a whole block (with have_block) */
+    int have_block;
     int64_t t_last_ns;
     int have;
 } hx_sat_t;

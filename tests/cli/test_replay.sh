@@ -685,6 +685,28 @@ json "$T/swing.json" 'j["saturated_samples"] == json.load(open(sys.argv[1].repla
     pass "info and replay agree on adjacent plateaus" || fail "adjacent plateaus: $(cat "$T/pyerr")"
 expect_exit 0 "a clipped walk resampled" "$H" replay "$T/clipped.csv" --rate 200
 expect_out "^note .*the input is clipped" "the clipping of a resampled log is named (judged before the low-pass)"
+# a still, quantised channel is not clipped: one run of two samples at its
+# maximum and one at its minimum, 6 steps of 0.001 rad/s apart (a still gyro
+# at its noise), are not flat tops at a full scale (info said gx 4, replay
+# noted clipping)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"
+             for (i = 0; i < 400; i++) { k = (i * 7) % 5 - 2; if (i == 100 || i == 101) k = 3; if (i == 300 || i == 301) k = -3
+                                         printf "%.4f,0.01,0.02,9.81,%.3f,0,0\n", i / 400, k * 0.001 } }' > "$T/stillq.csv"
+expect_exit 0 "info on a still quantised log" "$H" info "$T/stillq.csv"
+expect_out "^saturation  ax 0 ay 0 az 0 gx 0 gy 0 gz 0$" "a still quantised channel's extremes are no clipping (info)"
+"$H" replay "$T/stillq.csv" --json "$T/stillq.json" >"$T/out" 2>&1
+if grep -q "input is clipped" "$T/out"; then fail "replay names a still quantised channel clipped"; else pass "no clipping note on a still quantised channel"; fi
+json "$T/stillq.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
+    pass "no clipped samples in a still quantised log (replay)" || fail "still quantised JSON: $(cat "$T/pyerr")"
+# ... and a second of standing from a real log (xio_ngimu_gait short_walk:
+# its gx takes 31 values 0.062 deg/s apart; info said gx 6)
+if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
+    "$H" convert "$D/xio_ngimu_gait/short_walk.csv" "$T/xstill.csv" --end 1 2>/dev/null || fail "convert the xio standing second"
+    expect_exit 0 "info on the xio standing second" "$H" info "$T/xstill.csv"
+    expect_out "^saturation  ax 0 ay 0 az 0 gx 0 gy 0 gz 0$" "a real standing second is not clipped"
+else
+    echo "skip the xio standing second (no ../shared/data; set FNAV_DATA_DIR)"
+fi
 
 # --- lost samples in motion: the bundled walk with a 50 ms hole every 300 ms
 # (rows deleted) closes at 1.31 m against 0.36 m, where the summary must say
