@@ -789,11 +789,22 @@ void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, cha
 void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
 {
     const fnav_nav_config_t *c = &t->config;
+    char det[160];
     size_t used;
     int k, i;
+    if (c->stance.detector == FNAV_DETECTOR_THRESHOLD) {
+        /* the threshold detector's own limits (fnav_stance.h), which the
+         * adaptive threshold may raise together */
+        snprintf(det, sizeof det, " (window RMS |w| < %.4g deg/s and ||f| - g| < %.4g m/s^2, %s limits)",
+                 (double)c->stance.gyro_thresh_rps * 180.0 / M_PI,
+                 (double)c->stance.accel_thresh_mps2,
+                 c->stance.adaptive ? "adaptive" : "fixed");
+    } else {
+        snprintf(det, sizeof det, "%s", c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)");
+    }
     k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
                  c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
-                 bias_model_name(c), detector_name(c), c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)",
+                 bias_model_name(c), detector_name(c), det,
                  samples_name(c), c->lever ? "on" : "off", c->settle ? "on" : "off", c->zaru ? "on" : "off");
     used = k > 0 ? (size_t)k : 0u;
     for (i = 0; i < t->nparams && used < size; i++) {

@@ -141,9 +141,14 @@ if [ "$(sed -n 2p "$T/out")" = "config            profile generic-mems, bias mod
 json "$T/s.json" "j['profile'] == 'generic-mems' and j['profile_file'] is None and j['bias_model'] == 'ar1' and j['detector'] == 'shoe' and j['adaptive_threshold'] is True and j['samples'] == 'instant' and j['lever'] is True and j['settling'] is True and j['zaru'] is False and j['params'] == []" &&
     pass "JSON: the default configuration" || fail "JSON configuration: $(cat "$T/pyerr")"
 expect_exit 0 "replay with options" "$H" replay vectors/walk.bin --profile mtx --bias-model off --detector threshold --samples mean --param zaru=1 --param adaptive=0 --param settle=0 --json "$T/cfg.json"
-expect_out "^config            profile mtx, bias model off, detector threshold (fixed threshold), samples mean, lever on, settling off, ZARU on; parameters overridden: zaru=1, adaptive=0, settle=0$" "summary: the options' configuration"
+expect_out "^config            profile mtx, bias model off, detector threshold (window RMS |w| < 34.38 deg/s and ||f| - g| < 0.6 m/s^2, fixed limits), samples mean, lever on, settling off, ZARU on; parameters overridden: zaru=1, adaptive=0, settle=0$" "summary: the options' configuration"
 json "$T/cfg.json" "j['profile'] == 'mtx' and j['profile_file'] is None and j['bias_model'] == 'off' and j['detector'] == 'threshold' and j['adaptive_threshold'] is False and j['samples'] == 'mean' and j['lever'] is True and j['settling'] is False and j['zaru'] is True and j['params'] == ['zaru=1', 'adaptive=0', 'settle=0']" &&
     pass "JSON: the options' configuration" || fail "JSON options' configuration: $(cat "$T/pyerr")"
+# the threshold detector is labelled with its own limits, the parameters'
+# values, not with the SHOE's "(adaptive threshold)" (which it read)
+expect_exit 0 "replay --detector threshold" "$H" replay vectors/walk.bin --detector threshold --param gyro_thresh_dps=20 --param accel_thresh=0.8
+expect_out "^config            profile generic-mems, bias model ar1, detector threshold (window RMS |w| < 20 deg/s and ||f| - g| < 0.8 m/s^2, adaptive limits), samples instant," \
+    "summary: the threshold detector's limits named"
 sed 's/^name = .*/name = mysensor/' docs/profiles/generic-mems.profile > "$T/my.profile"
 expect_exit 0 "replay with a profile file" "$H" replay vectors/walk.bin --profile "$T/my.profile" --param lever=0 --json "$T/pf.json"
 expect_out "^config            profile mysensor (file $T/my.profile), bias model ar1, detector shoe (adaptive threshold), samples instant, lever off, settling on, ZARU off; parameters overridden: lever=0$" "summary: a profile file's name and path"
