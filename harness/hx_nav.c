@@ -2212,6 +2212,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "from the time stamps of the first 4,096 samples: 1 / their median interval; the detector's "
                      "first intervals give %.4g Hz", r != NULL ? hx_reader_meta(r)->rate_start_hz : 0.0);
+        } else if (nav.stats.samples < 2u) {
+            /* no interval to take the median of: the figure is the
+             * detector's fallback, not the log's rate */
+            traj->rate_none = 1;
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "one sample gives no rate; the stance detector took its fallback of %.1f Hz", traj->rate_hz);
         } else {
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "the stance detector's estimate: 1 / the median of its first %d intervals", HX_STANCE_PROBE);
@@ -2936,8 +2942,12 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         }
         fputc('\n', f);
     }
-    fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
-            t->rate_src, t->rate_src[0] ? ")" : "", t->window);
+    if (t->rate_none) {
+        fprintf(f, "rate              none (%s), detector window %d samples\n", t->rate_src, t->window);
+    } else {
+        fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz,
+                t->rate_src[0] ? " (" : "", t->rate_src, t->rate_src[0] ? ")" : "", t->window);
+    }
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
     if (t->input_complete == 0) {
         /* the run stopped early: at a bad line of the log, or at the
@@ -3140,8 +3150,10 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     int k, rc;
     cJSON_AddStringToObject(root, "log", log_path);
     cJSON_AddStringToObject(root, "command", command);
-    cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
-    cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
+    /* null for one sample (rate_none), as the text's "none" */
+    cJSON_AddItemToObject(root, "rate_hz", num(t->rate_none ? (double)NAN : t->rate_hz));
+    cJSON_AddItemToObject(root, "input_rate_hz",
+                          num(t->rate_none ? (double)NAN : t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddItemToObject(root, "rate_assumed_hz", num(t->rate_assumed_hz > 0.0 ? t->rate_assumed_hz : (double)NAN));
     if (t->in_rate_hz > 0.0) {
         /* --rate: the input's own gaps, closed up by the resampler (health's

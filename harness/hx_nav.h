@@ -128,6 +128,7 @@ typedef struct {
     int events;
     fnav_nav_stats_t stats;      /**< navigator counters at the end */
     double rate_hz;              /**< detector rate */
+    int rate_none;               /**< one sample: no interval gave the rate, the detector took its fallback (rate_hz) */
     int window;                  /**< detector window, samples */
     int zupt_min_n;              /**< the detector's shortest ZUPT run, samples (min_zupt_s at the rate; 0: not known) */
     int zupt_max_n;              /**< the longest shortest ZUPT run the look-ahead allows (lag + 1, samples; 0: not known) */

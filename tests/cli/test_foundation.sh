@@ -75,6 +75,14 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
 expect_exit 0 "info on a one-sample log" "$H" info "$T/one.csv"
 expect_out "^rate        none (one sample gives no rate)$" "one sample: no rate, said"
 expect_out "^interval    none (one sample)$" "one sample: no interval, said"
+# ... and replay's rate line says so too, not "100.0 Hz (the stance
+# detector's estimate: 1 / the median of its first 32 intervals)", the
+# detector's fallback taken for an estimate; JSON rate_hz null
+expect_exit 1 "replay of a one-sample log" "$H" replay "$T/one.csv" --json "$T/one.json"
+expect_out "^rate              none (one sample gives no rate; the stance detector took its fallback of 100.0 Hz), detector window " \
+    "replay, one sample: no rate, said"
+json "$T/one.json" 'j["rate_hz"] is None and j["input_rate_hz"] is None' && pass "replay, one sample: JSON rate_hz null" ||
+    fail "replay, one sample: JSON rate $(grep -o '"rate_hz":[^,]*' "$T/one.json")"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
 expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
 expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
