@@ -140,6 +140,13 @@ expect_exit 0 "convert --rate 50 --end 1.5 of a log with NaN at 2 s" "$H" conver
 expect_exit 0 "info of that .bin: complete (END written)" "$H" info "$T/wr.bin"
 expect_exit 1 "convert --rate 50 --end 1.9: the error within the resampler's reach" "$H" convert "$T/nan200.csv" "$T/wr2.bin" --end 1.9 --rate 50
 expect_exit 1 "info of that .bin: incomplete" "$H" info "$T/wr2.bin"
+# --rate on fewer than 4 samples: the error names the file in replay as in
+# convert (replay said "too few samples to resample (3)" alone)
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' >"$T/three.csv"
+expect_exit 1 "replay --rate of a 3-sample log" "$H" replay "$T/three.csv" --rate 20
+expect_err "^harness replay: error: $T/three.csv: too few samples to resample (3)$" "replay --rate: the file named"
+expect_exit 1 "convert --rate of a 3-sample log" "$H" convert "$T/three.csv" "$T/three20.csv" --rate 20
+expect_err "^harness convert: error: $T/three.csv: too few samples to resample (3)$" "convert --rate: the file named"
 
 # --- an accelerometer that reads exactly 0 (disabled, or not written by the
 # logger): info said "gravity along -x" and "f spreads by inf %" with no
