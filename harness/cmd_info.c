@@ -32,7 +32,9 @@ static int cmp_i64(const void *a, const void *b)
 typedef struct {
     double rate_hz, dt_med_s, dt_min_s, dt_max_s, duration_s;
     double rate_chg_at_s, rate_chg_hz, rate_off; /* hx_rate_changes */
-    long gaps, dups, drops, backwards;
+    long gaps, dups, drops;
+    long backwards;        /* steps back of the sensor counter (seq), which the drops leave out */
+    size_t back_first;     /* the first of them: the sample whose seq is below its predecessor's */
     double max_gap_s;
     long sat[6];
     double peak[6];
@@ -154,6 +156,13 @@ static void analyse(const hx_log_t *log, info_t *in)
                 uint32_t ds = log->seq[i] - log->seq[i - 1];
                 if (ds > 1u && ds < 0x80000000u) {
                     in->drops += (long)(ds - 1u);
+                } else if (ds >= 0x80000000u) {
+                    /* below the last by up to half the range (a wrap of a
+                     * counter reads as a small step forward): out of order,
+                     * or the counter restarted */
+                    if (in->backwards++ == 0) {
+                        in->back_first = i;
+                    }
                 }
             }
         }
@@ -315,6 +324,11 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
         cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
     } else {
         cJSON_AddNullToObject(j, "counter_drops");
+    }
+    if (log->meta.has_seq && !in->empty) {
+        cJSON_AddNumberToObject(j, "counter_backwards", (double)in->backwards);
+    } else {
+        cJSON_AddNullToObject(j, "counter_backwards");
     }
     if (in->rate_off > 0.0 && !in->empty) {
         cJSON *chg = cJSON_AddObjectToObject(j, "rate_change");
@@ -490,6 +504,15 @@ int hx_cmd_info(int argc, char **argv)
         return e < 0 ? HX_EXIT_DATA : e;
     }
     analyse(&log, &in);
+    if (in.backwards > 0) {
+        /* a timing fault as a gap or a drop is, but one the drops do not
+         * count: said on standard error as well, where a script sees it */
+        hx_warn("info", "%s: the sensor counter steps back %ld time%s (first at sample %zu, t = %.3f s: %lu after "
+                        "%lu): samples out of order, or the counter restarted; the drops count only its steps forward",
+                a.pos[0], in.backwards, in.backwards == 1 ? "" : "s", in.back_first + 1u,
+                1e-9 * (double)(log.t_ns[in.back_first] - log.t_ns[0]), (unsigned long)log.seq[in.back_first],
+                (unsigned long)log.seq[in.back_first - 1u]);
+    }
     if (in.gyro_glitches > 0) {
         hx_warn("info", "%s: %ld sample%s read a rate past any MEMS gyro's range (%.0f rad/s on an axis; the largest "
                         "%.4g rad/s) among %ld within it: glitches of the sensor or its link, which the navigator "
@@ -563,6 +586,12 @@ int hx_cmd_info(int argc, char **argv)
     }
     if (log.meta.has_seq) {
         printf("drops       %ld (missing sensor counter values)\n", in.drops);
+    }
+    if (in.backwards > 0) {
+        printf("counter     steps back %ld time%s, first at sample %zu (t = %.3f s: %lu after %lu)\n", in.backwards,
+               in.backwards == 1 ? "" : "s", in.back_first + 1u,
+               1e-9 * (double)(log.t_ns[in.back_first] - log.t_ns[0]), (unsigned long)log.seq[in.back_first],
+               (unsigned long)log.seq[in.back_first - 1u]);
     }
     printf("saturation ");
     for (c = 0; c < 6; c++) {

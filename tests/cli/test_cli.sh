@@ -206,6 +206,33 @@ expect_exit 0 "info --json, a log without a counter" "$H" info "$T/r.csv" --json
 grep -q "^drops" "$T/out" && fail "a drops line without a counter" || pass "no drops line without a counter"
 json "$T/nc.json" "'counter_drops' in j and j['counter_drops'] is None" && pass "counter_drops is null without a counter" ||
     fail "counter_drops without a counter: $(grep -o '"counter_drops":[^,]*' "$T/nc.json")"
+# a sensor counter that steps back (rows out of order, a restarted counter)
+# is a timing fault said with its count and first place, on standard output
+# and standard error (info was silent: the drops count only steps forward);
+# JSON counter_backwards, null without a counter. A .bin whose seq is
+# marked the sensor's (flags bit 2, docs/log-format.md) and set 50 back at
+# samples 1001-1003 and 1501 (0-based records 1000-1002, 1500)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 2000; k++) printf "%.2f,0,0,-9.8,0,0,0\n", k / 100 }' > "$T/seq.csv"
+"$H" convert "$T/seq.csv" "$T/seq.bin" 2>/dev/null || fail "convert for the counter check"
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+struct.pack_into("<I", b, 12, struct.unpack_from("<I", b, 12)[0] | 4)
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+for k in (1000, 1001, 1002, 1500):
+    o = 192 + 48 * k
+    struct.pack_into("<I", b, o + 4, struct.unpack_from("<I", b, o + 4)[0] - 50)
+    struct.pack_into("<I", b, o + 44, zlib.crc32(bytes(b[o:o + 44])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' "$T/seq.bin" "$T/seqback.bin"
+expect_exit 0 "info, a counter that steps back" "$H" info "$T/seqback.bin" --json "$T/seqback.json"
+expect_out "^counter     steps back 2 times, first at sample 1001 (t = 10.000 s: 950 after 999)$" "info: the counter's steps back counted, the first placed"
+expect_err "^harness info: warning: $T/seqback.bin: the sensor counter steps back 2 times (first at sample 1001, t = 10.000 s: 950 after 999)" \
+    "info: the counter's steps back warned"
+json "$T/seqback.json" "j['counter_backwards'] == 2" && pass "counter_backwards counts the steps back" ||
+    fail "counter_backwards: $(grep -o '"counter_backwards":[^,]*' "$T/seqback.json")"
+json "$T/sq.json" "j['counter_backwards'] == 0" && json "$T/nc.json" "'counter_backwards' in j and j['counter_backwards'] is None" &&
+    pass "counter_backwards 0 with a counter that advances, null without a counter" || fail "counter_backwards: $(cat "$T/pyerr")"
+expect_exit 0 "info, a log with a counter that advances" "$H" info "$T/sq.csv"
+grep -q "^counter" "$T/out" && fail "a counter line for a counter that advances" || pass "no counter line for a counter that advances"
 
 # --- a repeated option takes its last value, and so does `--json -`'s claim
 # on standard output: `info LOG --json - --json F` wrote the JSON to F and
