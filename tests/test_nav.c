@@ -2524,20 +2524,22 @@ static void test_max_gap_below_interval(void **state)
 
 /* hx_sat: a channel is saturated with at least two runs of two or more
  * samples at its extreme (hx_nav.h, docs/harness.md "info"); one run is a
- * natural maximum. A run of two at +5 at t = 1,2 ms and one at 5,6 ms:
- * 4 samples at the maximum and 1 at the minimum (-1), the count of both
+ * natural maximum. After a still second (HX_SAT_BLOCK samples alternating
+ * +-0.001: the noise at rest 0.001), a run of two at +5 and another: 4
+ * samples at the maximum and 1 at the minimum (-1), the count of both
  * extremes (hx_sat_count) 5, counted by hand; without the second run, 0. */
-/* hx_sat_count of channel ax after the values v at 1 ms steps */
-static long sat_count_of(const double *v, size_t n)
+/* hx_sat_count of channel ax after n_still samples alternating +-0.001,
+ * then the values v, at 1 ms steps */
+static long sat_count_of(size_t n_still, const double *v, size_t n)
 {
     hx_sat_t st;
     fnav_sample_t s;
     size_t k;
     memset(&st, 0, sizeof st);
     memset(&s, 0, sizeof s);
-    for (k = 0; k < n; k++) {
+    for (k = 0; k < n_still + n; k++) {
         s.t_ns = (int64_t)k * 1000000;
-        s.accel_mps2[0] = (fnav_real_t)v[k];
+        s.accel_mps2[0] = (fnav_real_t)(k < n_still ? (k % 2 == 0 ? 0.001 : -0.001) : v[k - n_still]);
         hx_sat_push(&st, &s);
     }
     return hx_sat_count(&st, 0);
@@ -2548,8 +2550,33 @@ static void test_sat_two_runs(void **state)
     static const double k_one[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 1.0, 0.0 };
     static const double k_two[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 5.0, 5.0, 0.0 };
     (void)state;
-    assert_int_equal(sat_count_of(k_one, sizeof k_one / sizeof k_one[0]), 0);
-    assert_int_equal(sat_count_of(k_two, sizeof k_two / sizeof k_two[0]), 5);
+    assert_int_equal(sat_count_of(HX_SAT_BLOCK, k_one, sizeof k_one / sizeof k_one[0]), 0);
+    assert_int_equal(sat_count_of(HX_SAT_BLOCK, k_two, sizeof k_two / sizeof k_two[0]), 5);
+}
+
+/* A still, quantised channel is not clipped: values of 0.001 steps within
+ * +-2 steps, with a run of two at +3 and one at -3 steps, span 6 steps,
+ * within HX_SAT_SPAN_NOISE times the noise at rest (at least the step): 0,
+ * where the flat tops alone said 4. The same runs at +-0.5, 500 steps
+ * apart, are clipping: 4. */
+static void test_sat_still_quantised(void **state)
+{
+    double v[200];
+    size_t k;
+    (void)state;
+    for (k = 0; k < 200; k++) {
+        v[k] = 0.001 * (double)((long)((k * 7u) % 5u) - 2);
+    }
+    v[50] = v[51] = 0.003;
+    v[150] = v[151] = -0.003;
+    assert_int_equal(sat_count_of(0, v, 200), 0);
+    v[50] = v[51] = 0.5;
+    v[150] = v[151] = -0.5;
+    assert_int_equal(sat_count_of(0, v, 200), 4);
+    /* fewer samples than a block: the noise of those there */
+    v[45] = v[46] = 0.003;
+    v[55] = v[56] = -0.003;
+    assert_int_equal(sat_count_of(0, v + 40, 20), 0);
 }
 
 /* The notes' thresholds at their edges as hx_nav.h words them: "little
@@ -2834,6 +2861,7 @@ int main(void)
         cmocka_unit_test(test_resampler_bursts),
         cmocka_unit_test(test_walk_window),
         cmocka_unit_test(test_sat_two_runs),
+        cmocka_unit_test(test_sat_still_quantised),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),
         cmocka_unit_test(test_long_gap_edge),
