@@ -2038,12 +2038,14 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_progress_start(&stage, label, 1.0);
         if (hx_nav_resample_progress(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs,
                                      show ? stage_progress : NULL, &stage, err, err_size) != 0) {
-            char why[HX_ERR_SIZE];
             hx_line_break(); /* a progress line left open: the error follows */
             hx_log_free(&raw);
-            /* named by the file as convert --rate names it */
-            snprintf(why, sizeof why, "%s", err);
-            snprintf(err, err_size, "%s: %s", path, why);
+            if (span_n < 4u) {
+                /* too few samples: named by the file as convert --rate
+                 * names it (the resampler's other errors say the file's
+                 * rate or stamps and keep their wording) */
+                snprintf(err, err_size, "%s: too few samples to resample (%zu)", path, span_n);
+            }
             return -1;
         }
         hx_progress_end(&stage);
