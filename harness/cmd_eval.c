@@ -1987,7 +1987,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_args_t a;
     hx_nav_opts_t o;
     ev_t ev;
-    char err[HX_ERR_SIZE], *cmdline, *env_data = NULL, zupt_run[96];
+    char err[HX_ERR_SIZE], *cmdline, *env_data = NULL, zupt_run[96], det_label[HX_NAV_DETECTOR_LABEL_SIZE];
     int manifest;
     const char *out_path, *json_path, *data;
     char md_path[PATH_MAX + 1];
@@ -2232,6 +2232,7 @@ int hx_cmd_eval(int argc, char **argv)
         snprintf(zupt_run, sizeof zupt_run, "%g ms (`min_zupt_cycle` 0)", 1e3 * (double)ev.cfg.stance.min_zupt_s);
     }
     cmdline = eval_command(argc, argv, env_data != NULL && *env_data != '\0' ? env_data : NULL);
+    hx_nav_detector_label(&ev.cfg, det_label, sizeof det_label); /* as replay's config line */
     {
         char mpath[EV_PATH_SIZE];
         snprintf(mpath, sizeof mpath, "%s/MANIFEST.md", ev.data);
@@ -2249,8 +2250,8 @@ int hx_cmd_eval(int argc, char **argv)
             manifest ? "MANIFEST.md" : "no MANIFEST.md",
             ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
-            ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
-            ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
+            ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold", det_label,
+            ev.cfg.lever ? "on" : "off",
             ev.cfg.settle ? "on" : "off", zupt_run);
     free(cmdline);
 

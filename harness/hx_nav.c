@@ -786,22 +786,27 @@ void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, cha
     }
 }
 
-void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
+void hx_nav_detector_label(const fnav_nav_config_t *c, char *buf, size_t size)
 {
-    const fnav_nav_config_t *c = &t->config;
-    char det[160];
-    size_t used;
-    int k, i;
     if (c->stance.detector == FNAV_DETECTOR_THRESHOLD) {
         /* the threshold detector's own limits (fnav_stance.h), which the
          * adaptive threshold may raise together */
-        snprintf(det, sizeof det, " (window RMS |w| < %.4g deg/s and ||f| - g| < %.4g m/s^2, %s limits)",
+        snprintf(buf, size, " (window RMS |w| < %.4g deg/s and ||f| - g| < %.4g m/s^2, %s limits)",
                  (double)c->stance.gyro_thresh_rps * 180.0 / M_PI,
                  (double)c->stance.accel_thresh_mps2,
                  c->stance.adaptive ? "adaptive" : "fixed");
     } else {
-        snprintf(det, sizeof det, "%s", c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)");
+        snprintf(buf, size, "%s", c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)");
     }
+}
+
+void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
+{
+    const fnav_nav_config_t *c = &t->config;
+    char det[HX_NAV_DETECTOR_LABEL_SIZE];
+    size_t used;
+    int k, i;
+    hx_nav_detector_label(c, det, sizeof det);
     k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
                  c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
                  bias_model_name(c), detector_name(c), det,

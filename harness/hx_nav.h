@@ -193,6 +193,13 @@ void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_con
  *  none); the path alone when every option is the default. */
 void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size);
 
+/** The stance detector's label after its name, as the `config` line and
+ *  eval's results.md print it: " (adaptive threshold)" or " (fixed
+ *  threshold)" for SHOE; the threshold detector's limits, " (window RMS |w|
+ *  < 34.38 deg/s and ||f| - g| < 0.6 m/s^2, adaptive limits)". */
+#define HX_NAV_DETECTOR_LABEL_SIZE 160
+void hx_nav_detector_label(const fnav_nav_config_t *c, char *buf, size_t size);
+
 /** The configuration's description as the summary's `config` line prints
  *  it, without the label ("profile generic-mems, bias model ar1, ..."). */
 void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size);

@@ -933,5 +933,15 @@ grep -qF "Data: \`\`\` $B \`\`\` (no MANIFEST.md)" "$T/tick.md" &&
     fail "backticks in the data path: $(sed -n 3p "$T/tick.md"; grep -F 'xio_ngimu_gait' "$T/tick.md" | head -1)"
 rm -rf "$B"
 
+# --- the threshold detector named with its limits, as replay's config line (it read "(adaptive threshold)", the
+# SHOE's words)
+B="$T/thr"
+mkdir -p "$B/openshoe_gx2"
+still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+"$H" eval --no-experiments --no-plots --data "$B" --detector threshold --out "$T/thr.md" >/dev/null 2>&1
+grep -qF 'detector `threshold` (window RMS |w| < 34.38 deg/s and ||f| - g| < 0.6 m/s^2, adaptive limits), lever' "$T/thr.md" &&
+    pass "eval --detector threshold: its limits named" || fail "threshold label: $(sed -n 4p "$T/thr.md" | head -c 300)"
+rm -rf "$B"
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
