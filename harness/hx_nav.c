@@ -2229,6 +2229,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             traj->rate_none = 1;
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "one sample gives no rate; the stance detector took its fallback of %.1f Hz", traj->rate_hz);
+        } else if (stamps_never_advance(&nav.stats)) {
+            /* intervals all 0: as one sample, no rate (the figure was the
+             * detector's fallback, said to be its estimate) */
+            traj->rate_none = 1;
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "the time stamps never advance; the stance detector took its fallback of %.1f Hz", traj->rate_hz);
         } else {
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "the stance detector's estimate: 1 / the median of its first %d intervals", HX_STANCE_PROBE);

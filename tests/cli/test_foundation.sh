@@ -86,6 +86,11 @@ json "$T/one.json" 'j["rate_hz"] is None and j["input_rate_hz"] is None' && pass
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
 expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
 expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
+expect_exit 1 "replay of a log of one time stamp" "$H" replay "$T/onestamp.csv" --json "$T/onestamp.json"
+expect_out "^rate              none (the time stamps never advance; the stance detector took its fallback of 100.0 Hz), " \
+    "replay, one time stamp: no rate, said"
+json "$T/onestamp.json" 'j["rate_hz"] is None' && pass "replay, one time stamp: JSON rate_hz null" ||
+    fail "replay, one time stamp: JSON rate $(grep -o '"rate_hz":[^,]*' "$T/onestamp.json")"
 # a 100 Hz log with its time column in milliseconds reads 0.1 Hz: info does
 # not print that rate without a word, as allan and psd name the unit; a
 # warning, the status unchanged
