@@ -15,8 +15,8 @@
 
 static const hx_opt_t k_opts[] = {
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
-    { "--units", "SPEC", "units the headers do not name (or override): time=s|ms|us|ns,accel=m/s2|g|mg|ug,"
-                         "gyro=rad/s|deg/s|mdps", 0 },
+    { "--units", "SPEC", "units the headers do not name (accel, gyro: or override; a time's unit named wins): "
+                         "time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -130,6 +130,11 @@ int hx_cmd_merge(int argc, char **argv)
         }
         if (f[k].cut_last > 0) {
             hx_warn("merge", "%s:%ld: " HX_CUT_LAST_TEXT, a.pos[k], f[k].cut_last);
+        }
+        if (f[k].time_asked != NULL) {
+            hx_warn("merge", "%s: time '%s' names its unit: read in %s, not in the %s of --units time=%s (the unit "
+                             "of a time whose name gives none)", a.pos[k], f[k].cols[0], f[k].time_unit,
+                    f[k].time_asked, f[k].time_asked);
         }
         if (f[k].steps_back > 0) {
             hx_warn("merge", "%s: %ld row%s whose stamp is not after the one before dropped", a.pos[k],

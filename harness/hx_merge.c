@@ -539,7 +539,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     for (k = 0; k < 3; k++) {
         snprintf(f->cols[k + 1], sizeof f->cols[k + 1], "%s", hf[c.ax[k]]);
     }
-    /* units: --units first, then the names, then the interchange's */
+    /* units: --units first (a time named aside, below), then the names, then the interchange's */
     if (units != NULL) {
         l = *units;
     } else {
@@ -550,8 +550,16 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
      * header made it 'give --units time=ms,accel=ug', which read the
      * other file's seconds as ms) */
     ask = l;
-    if (!(l.units_given & 1)) {
+    /* the time: a unit the header names wins over --units time=, which is
+     * one option for two files: the unit of a time whose name gives none
+     * (a 'time (ms)' file beside a bare 'time' one was read in the s that
+     * --units time=s gave the other, a 0.1 Hz log, merged, exit 0) */
+    if (!(l.units_given & 1) || c.t_unit != HX_UNIT_NONE) {
+        const int asked = l.time_digits;
         hx_csv_layout_unit(&l, c.t_unit);
+        if ((l.units_given & 1) && !c.t_dated && l.time_digits != asked) {
+            f->time_asked = digits_unit(asked);
+        }
     }
     if (!(l.units_given & (kind == HX_TRI_ACC ? 2 : 4))) {
         hx_csv_layout_unit(&l, c.unit);

@@ -44,14 +44,18 @@ typedef struct {
                                    MetaWear counts from each file's own first sample */
     const char *time_unit;    /**< "s", "ms", "us", "ns"; NULL: dates and times (or clock times), read to ns
                                    whatever the unit named */
+    const char *time_asked;   /**< the --units time= unit not read because the header names another (the
+                                   time_unit read), NULL none */
     const char *unit;         /**< the values' unit: "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" */
     const char *unit_from;    /**< where the units came from: "named", "--units", "default" */
     char error[HX_ERR_SIZE];  /**< the error that stopped reading after a first sample ("" none) */
 } hx_tri_t;
 
 /** Read a whole file of kind (HX_TRI_ACC or HX_TRI_GYR). units: --units
- *  as parsed (hx_csv_units_parse; its units_given items override a unit
- *  the header names), NULL for none. A name of the other sensor with none
+ *  as parsed (hx_csv_units_parse; its accel and gyro items override a
+ *  unit the header names; its time item gives the unit of a time whose
+ *  name names none, as one option for two files: a unit named wins, and
+ *  f->time_asked says one given was not read), NULL for none. A name of the other sensor with none
  *  of this one's is refused as swapped files; a file with both sensors'
  *  names is refused (read it directly); of several time columns the one
  *  of the clock two files share is read (a clock's name such as "epoch

@@ -467,6 +467,23 @@ expect_err "in seconds its stamps give 12.5 Hz: they look like milliseconds, a 1
     "merge: seconds named beside ms for a 12.5 Hz log"
 expect_exit 0 "merge: the 12.5 Hz log with --units time=s" "$H" merge "$T/c_acc12.csv" "$T/c_gyr12.csv" "$T/o.csv" --units time=s
 expect_err "c_acc12.csv: 300 samples, 12.5 Hz, 23.92 s" "merge: the 12.5 Hz log read in seconds"
+# --units time= is one option for two files: a time whose header names
+# its unit is read in it (a 'time (ms)' file was read in the ns that
+# --units time=ns gave the other file's bare 'time': 2.99 us long, merged
+# to 300 samples in 3 us, exit 0), with a warning
+awk 'BEGIN { print "time (ms),acc_x,acc_y,acc_z"; for (i = 0; i < 300; i++) printf "%d,0.1,0.2,9.8\n", i * 10 }' >"$T/c_accms.csv"
+awk 'BEGIN { print "time,gyr_x,gyr_y,gyr_z"; for (i = 0; i < 300; i++) printf "%d0000000,0.01,0.02,0.03\n", i }' >"$T/c_gyrns.csv"
+expect_exit 0 "merge: a 'time (ms)' file and a bare time with --units time=ns" \
+    "$H" merge "$T/c_accms.csv" "$T/c_gyrns.csv" "$T/o.csv" --units time=ns
+expect_err "c_accms.csv: 300 samples, 100 Hz, 2.99 s; time 'time (ms)' in ms" "merge: the time's named unit wins over --units"
+expect_err "c_gyrns.csv: 300 samples, 100 Hz, 2.99 s; time 'time' in ns" "merge: --units time= reads the bare time"
+expect_err "warning: .*c_accms.csv: time 'time (ms)' names its unit: read in ms, not in the ns of --units time=ns" \
+    "merge: the --units time not read is said"
+if [ "$(tail -n 1 "$T/o.csv" | cut -d, -f1)" = "2.990000000" ] && [ "$(grep -c . "$T/o.csv")" -eq 301 ]; then
+    pass "merge: 300 samples to 2.99 s"
+else
+    fail "merge: 300 samples to 2.99 s: $(grep -c . "$T/o.csv") lines, last $(tail -n 1 "$T/o.csv")"
+fi
 
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
