@@ -128,6 +128,10 @@ int hx_cmd_merge(int argc, char **argv)
                                                            f[k].rows_checked, f[k].hdr_fields, 1, wt, sizeof wt));
             }
         }
+        if (f[k].dmix.said) {
+            char wt[HX_ERR_SIZE];
+            hx_warn("merge", "%s", hx_decimal_mix_text(&f[k].dmix, a.pos[k], wt, sizeof wt));
+        }
         if (f[k].cut_last > 0) {
             hx_warn("merge", "%s:%ld: " HX_CUT_LAST_TEXT, a.pos[k], f[k].cut_last);
         }

@@ -101,6 +101,7 @@ struct hx_reader {
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
     long dc_first;              /* the first line whose decimal commas were read as points (0: none) */
+    hx_decimal_mix_t dmix;      /* decimal commas and points both in the columns read (a mixed log) */
     int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
     int kalibr;                 /* csv: Kalibr's IMU CSV header matched (hx_names_kalibr) */
     int sensorlog;              /* csv: SensorLog's header matched (hx_names_sensorlog) */
@@ -387,10 +388,10 @@ static int parse_num(const char *s, double *out)
     return 0;
 }
 
-/* Whether a field is a number written with a decimal comma ("-0,5",
- * "9,81e+00"), as a European-locale spreadsheet exports it: an error whose
- * message then says so. */
-static int decimal_comma(const char *s)
+/* Whether a field is a number written with the decimal mark mark and
+ * digits on both sides ("-0,5", "9,81e+00" for a comma; "9.81" for a
+ * point). */
+static int decimal_mark_is(const char *s, char mark)
 {
     int lead = 0, frac = 0;
     if (*s == '+' || *s == '-') {
@@ -400,7 +401,7 @@ static int decimal_comma(const char *s)
         s++;
         lead++;
     }
-    if (lead == 0 || *s++ != ',') {
+    if (lead == 0 || *s++ != mark) {
         return 0;
     }
     while (isdigit((unsigned char)*s)) {
@@ -420,6 +421,44 @@ static int decimal_comma(const char *s)
         }
     }
     return frac > 0 && *s == '\0';
+}
+
+/* Whether a field is a number written with a decimal comma, as a
+ * European-locale spreadsheet exports it: an error whose message then
+ * says so. */
+static int decimal_comma(const char *s)
+{
+    return decimal_mark_is(s, ',');
+}
+
+int hx_decimal_mix_note(hx_decimal_mix_t *m, const char *s, long line)
+{
+    if (m->said) {
+        return 0;
+    }
+    if (m->comma_line == 0 && decimal_mark_is(s, ',')) {
+        m->comma_line = line;
+        snprintf(m->comma, sizeof m->comma, "%s", s);
+    } else if (m->point_line == 0 && decimal_mark_is(s, '.')) {
+        m->point_line = line;
+        snprintf(m->point, sizeof m->point, "%s", s);
+    } else {
+        return 0;
+    }
+    m->said = m->comma_line > 0 && m->point_line > 0;
+    return m->said;
+}
+
+const char *hx_decimal_mix_text(const hx_decimal_mix_t *m, const char *path, char *buf, size_t size)
+{
+    const int point_later = m->point_line >= m->comma_line;
+    snprintf(buf, size, "%s:%ld: a number with a decimal %s ('%s') in a log whose numbers have decimal %s ('%s', "
+                        "line %ld): both read as decimal marks (a point that is a thousands separator, '1.002' for "
+                        "1002, is misread: export the log with one decimal mark)",
+             path, point_later ? m->point_line : m->comma_line, point_later ? "point" : "comma",
+             point_later ? m->point : m->comma, point_later ? "commas" : "points", point_later ? m->comma : m->point,
+             point_later ? m->comma_line : m->point_line);
+    return buf;
 }
 
 #define DECIMAL_COMMA_FIX "footnav reads numbers with a decimal point; export the log without the locale's decimal comma"
@@ -447,18 +486,26 @@ static void decimal_commas_read(hx_reader_t *r, char **f, int n)
         cols[4 + k] = r->col_g[k];
     }
     for (k = 0; k < 8; k++) {
-        char *c;
-        if (cols[k] < 0 || cols[k] >= n || !decimal_comma(f[cols[k]])) {
+        int mixed;
+        if (cols[k] < 0 || cols[k] >= n) {
             continue;
         }
-        if (r->dc_first == 0) {
-            r->dc_first = r->stats.lines;
-            add_warn(r, "%s:%ld: numbers with a decimal comma ('%.40s') read as decimals (the fields are "
-                        "%s-separated)",
-                     r->path, r->stats.lines, f[cols[k]], r->delim == ';' ? "semicolon" : "tab");
+        /* a point among commas, or a comma among points: both read as
+         * decimal marks, said once where the second kind first is */
+        mixed = hx_decimal_mix_note(&r->dmix, f[cols[k]], r->stats.lines);
+        if (decimal_comma(f[cols[k]])) {
+            if (r->dc_first == 0) {
+                r->dc_first = r->stats.lines;
+                add_warn(r, "%s:%ld: numbers with a decimal comma ('%.40s') read as decimals (the fields are "
+                            "%s-separated)",
+                         r->path, r->stats.lines, f[cols[k]], r->delim == ';' ? "semicolon" : "tab");
+            }
+            *strchr(f[cols[k]], ',') = '.';
         }
-        c = strchr(f[cols[k]], ',');
-        *c = '.';
+        if (mixed) {
+            char wt[HX_ERR_SIZE];
+            add_warn(r, "%s", hx_decimal_mix_text(&r->dmix, r->path, wt, sizeof wt));
+        }
     }
 }
 

@@ -430,6 +430,24 @@ char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul);
 const char *hx_field_count_text(const char *path, long first, long rows, long checked, int hdr_fields, int more,
                                 char *buf, size_t size);
 
+/** Numbers written with a decimal comma and with a decimal point in the
+ *  columns one log's reader reads where a comma can be one (fields not
+ *  comma-separated): the first of each, and whether said. Zeroed to start. */
+typedef struct {
+    long comma_line, point_line; /**< their lines, 0 none yet */
+    char comma[24], point[24];   /**< their fields, cut to 23 bytes */
+    int said;                    /**< the warning was due once */
+} hx_decimal_mix_t;
+/** Note field s of line: 1 when it makes the log's numbers hold both
+ *  marks for the first time (the warning due, hx_decimal_mix_text), else
+ *  0. Only a well-formed number counts ("-0,5", "9.81e+00"; not a date). */
+int hx_decimal_mix_note(hx_decimal_mix_t *m, const char *s, long line);
+/** The warning of a log whose numbers have both decimal marks, at the
+ *  line of the later one's first: both read as decimal marks, a point
+ *  there perhaps a thousands separator. Written to buf; returns buf.
+ *  Shared by the readers and merge. */
+const char *hx_decimal_mix_text(const hx_decimal_mix_t *m, const char *path, char *buf, size_t size);
+
 /** The remedy "give --units ITEMS" naming every unit item of want, the
  *  layout that reads the log (time=, accel=g, gyro=deg/s, in the
  *  synopsis's order): one --units value, since a second --units replaces

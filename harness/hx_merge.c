@@ -611,6 +611,13 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                 }
             }
             f->rows_checked++;
+            if (delim != ',' && !f->dmix.said) {
+                /* decimal commas and points both: read alike, said once */
+                (void)hx_decimal_mix_note(&f->dmix, df[c.t], t->lineno);
+                for (k = 0; k < 3; k++) {
+                    (void)hx_decimal_mix_note(&f->dmix, df[c.ax[k]], t->lineno);
+                }
+            }
             trc = field_time(df[c.t], delim, l.time_digits, &ns);
             if (unitless && nprobe < TRI_PROBE_ROWS && field_value(df[c.t], delim, &probe[nprobe]) == 0) {
                 nprobe++;

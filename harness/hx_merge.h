@@ -38,6 +38,8 @@ typedef struct {
     long short_rows, short_first; /**< rows with fewer fields than the header (enough for the columns read),
                                        and the first one's line */
     long long_rows, long_first;   /**< rows with data past the header's fields, and the first one's line */
+    hx_decimal_mix_t dmix;    /**< numbers with a decimal comma and with a point both (fields not comma-separated:
+                                   both read as decimal marks), the first of each; said: the warning due */
     long cut_last;            /**< the line of a last line dropped (no newline, ending in a value read), 0 none */
     char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
     int t_from_start;         /**< 1: the time column's name is a time from a start ("elapsed (s)"), which

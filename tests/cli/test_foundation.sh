@@ -537,6 +537,24 @@ for k in ("file", "log", "command", "path"):
 print([k for k in a if a.get(k) != b.get(k)])
 sys.exit(0 if a == b else 1)
 PYEOF
+# decimal commas and points in one log: both read as decimal marks, the
+# line of the later kind's first said (a point was read without a word,
+# though in such a log it may be a thousands separator: '1.002' for 1002)
+sed '101s/,/./g' "$T/deccomma.csv" >"$T/decmix.csv"
+expect_exit 0 "decimal commas, one row with points" "$H" info "$T/decmix.csv" --json "$T/decmix.json"
+expect_err "decmix.csv:101: a number with a decimal point ('0.251056671') in a log whose numbers have decimal commas ('0,000000000', line 2): both read as decimal marks" \
+    "decimal commas and points: the row with points named"
+"${PY:-/usr/bin/python3}" - "$T/decmix.json" "$T/a_info.json" <<'PYEOF' && pass "decimal commas and points: the original's figures" || fail "decimal commas and points: figures differ from the original's"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for k in ("file", "log", "command", "path"):
+    a.pop(k, None); b.pop(k, None)
+sys.exit(0 if a == b else 1)
+PYEOF
+{ head -2 "$T/a.csv" | tr ',' ';'; sed -n '3,$p' "$T/deccomma.csv"; } >"$T/decmix2.csv"
+expect_exit 0 "decimal points, then commas" "$H" info "$T/decmix2.csv"
+expect_err "decmix2.csv:3: a number with a decimal comma ('0,007531643') in a log whose numbers have decimal points ('0.000000000', line 2)" \
+    "decimal points then commas: the first comma's line named"
 # with commas between the fields a decimal comma is ambiguous: refused, said
 printf 't,ax,ay,az,gx,gy,gz\n"0,00","0,5","0,2","9,8","0,1","0,2","0,3"\n' >"$T/deccomma_c.csv"
 expect_exit 1 "decimal commas between commas" "$H" info "$T/deccomma_c.csv"

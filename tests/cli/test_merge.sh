@@ -163,6 +163,14 @@ PY
 expect_exit 0 "merge phyphox_acc + phyphox_semi" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox_semi.csv" "$T/m2.csv"
 if cmp -s "$T/m1.csv" "$T/m2.csv"; then pass "semicolons and decimal commas: the same log"
 else fail "semicolons and decimal commas: the log differs"; fi
+# a row with decimal points among decimal commas: read as decimals too,
+# the line said (merge read it without a word, as the log reader did)
+sed '501s/,/./g' "$T/phyphox_semi.csv" >"$T/phyphox_mix.csv"
+expect_exit 0 "merge phyphox_acc + phyphox_mix" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox_mix.csv" "$T/m2m.csv"
+expect_err "phyphox_mix.csv:501: a number with a decimal point ('$(sed -n '501s/,.*//p' "$T/phyphox.csv")') in a log whose numbers have decimal commas ('0,000000000', line 2): both read as decimal marks" \
+    "merge: decimal points among commas said, the line named"
+if cmp -s "$T/m1.csv" "$T/m2m.csv"; then pass "decimal commas and points: the same log"
+else fail "decimal commas and points: the log differs"; fi
 
 # --- MetaWear's pair: merged on the logger's clock, "epoch (ms)", not on
 # "elapsed (s)", which each file counts from its own first sample (the
