@@ -84,6 +84,37 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
     return 1;
 }
 
+/* What the CSV cannot carry of the input's (docs/log-format.md, "CSV
+ * interchange": t,ax,...,gz[,temp]): the sensor's own counter, and a .bin
+ * header's sensor name (not the 'unknown' of a log that named none) and
+ * axis note, said in one line (they were dropped without a word: a .bin
+ * to CSV and back read 'sensor unknown', its drops no longer counted). */
+static void warn_csv_drops(const char *path, const hx_meta_t *m, const char *out, hx_format_t to)
+{
+    char what[300] = "";
+    size_t len;
+    if (to == HX_FMT_BIN || (to == HX_FMT_AUTO && hx_ends_in(out, strlen(out), ".bin"))) {
+        return; /* hx_writer_open's choice: a .bin keeps them all */
+    }
+    if (m->has_seq) {
+        snprintf(what, sizeof what, ", the sensor's counter (seq, by which info counts drops)");
+    }
+    if (m->format == HX_FMT_BIN) {
+        len = strlen(what);
+        if (m->sensor[0] != '\0' && strcmp(m->sensor, "unknown") != 0) {
+            snprintf(what + len, sizeof what - len, ", the sensor name '%s'", m->sensor);
+        }
+        len = strlen(what);
+        if (m->axes[0] != '\0') {
+            snprintf(what + len, sizeof what - len, ", the axis note '%s'", m->axes);
+        }
+    }
+    if (what[0] != '\0') {
+        hx_warn("convert", "%s: the CSV has no place for %s: not written (a .bin keeps them: --to bin)", path,
+                what + 2);
+    }
+}
+
 static const hx_spec_t k_spec = {
     "convert", "IN OUT [options]",
     "Convert a log between the footnav .bin format, the CSV interchange format\n"
@@ -145,6 +176,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
         return HX_EXIT_IO;
     }
     hx_warn_gz_output("convert", a->pos[1], to);
+    warn_csv_drops(a->pos[0], &res.meta, a->pos[1], to);
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
         if (!in_window(wd, s.t_ns)) {
@@ -231,6 +263,7 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_IO;
     }
     hx_warn_gz_output("convert", a.pos[1], to);
+    warn_csv_drops(a.pos[0], &meta, a.pos[1], to);
     /* a long log shows progress (a day at 100 Hz takes 11 s to CSV) */
     hx_progress_start(&pr, "convert", 1.0);
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {

@@ -255,8 +255,27 @@ fi
 
 # --- round trip bin -> csv -> bin -> csv: identical CSV text
 expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
+# what the CSV cannot carry of a .bin is said (it was dropped without a word)
+expect_err "walk.bin: the CSV has no place for the sensor name 'x-io NGIMU', the axis note 'sensor axes; tilted at rest, +z mostly up': not written (a .bin keeps them: --to bin)" \
+    "convert bin->csv: the sensor name and axis note dropped, said"
 expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
 expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
+if grep -q "no place" "$T/err"; then fail "convert bin->csv (2): a warning though nothing is dropped"; cat "$T/err"
+else pass "convert bin->csv (2): nothing dropped, nothing said"; fi
+# a .bin whose seq is the sensor's own counter (header flags bit 2, the CRC
+# made again): the counter named too, with --rate's output as well
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+struct.pack_into("<I", b, 12, struct.unpack_from("<I", b, 12)[0] | 4)
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/walk_seq.bin" || fail "writing walk_seq.bin"
+expect_exit 0 "convert a .bin with the sensor's counter to csv" "$H" convert "$T/walk_seq.bin" -
+expect_err "walk_seq.bin: the CSV has no place for the sensor's counter (seq, by which info counts drops), the sensor name 'x-io NGIMU', the axis note" \
+    "convert bin->csv: the counter dropped, said"
+expect_exit 0 "convert --rate to csv" "$H" convert "$T/walk_seq.bin" "$T/seqr.csv" --rate 100
+expect_err "walk_seq.bin: the CSV has no place for the sensor name 'x-io NGIMU', the axis note" "convert --rate to csv: the header's text dropped, said"
+expect_exit 0 "convert a .bin to .bin" "$H" convert "$T/walk_seq.bin" "$T/seq2.bin"
+if grep -q "no place" "$T/err"; then fail "convert bin->bin: a warning though nothing is dropped"; else pass "convert bin->bin: nothing said"; fi
 # the extension in any case: OUT.BIN is a .bin (not written as CSV)
 expect_exit 0 "convert csv->BIN" "$H" convert "$T/a.csv" "$T/B.BIN"
 if cmp -s "$T/b.bin" "$T/B.BIN"; then pass "OUT.BIN is written as .bin"; else fail "OUT.BIN is not the .bin"; fi
