@@ -610,6 +610,17 @@ int hx_nav_resample_progress(const hx_log_t *in, double rate_hz, double max_gap_
 
 /* ------------------------------------------------------------ replay */
 
+/* 1 when a variance of channel ch (0..2 accelerometer, 3..5 gyroscope)
+ * is a foot's at rest, not its motion's (HX_SAT_REST_SD_*): only such a
+ * block gives the noise the span is judged against, so that a log that
+ * never rests (a run, a walk at 100 Hz whose blocks of 0.64 s all hold a
+ * swing) keeps the flat-top rule alone */
+static int sat_rest_var(int ch, double var)
+{
+    const double sd = ch < 3 ? HX_SAT_REST_SD_ACCEL : HX_SAT_REST_SD_GYRO;
+    return var <= sd * sd;
+}
+
 void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s)
 {
     int ch;
@@ -664,27 +675,32 @@ void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s)
         for (ch = 0; ch < 6; ch++) {
             const double m = st->bs[ch] / (double)st->bn;
             const double var = st->bss[ch] / (double)st->bn - m * m;
-            if (!st->have_block || var < st->var_min[ch]) {
+            if (sat_rest_var(ch, var) && (!st->have_rest[ch] || var < st->var_min[ch])) {
                 st->var_min[ch] = var;
+                st->have_rest[ch] = 1;
             }
         }
-        st->have_block = 1;
         st->bn = 0;
     }
     st->t_last_ns = s->t_ns;
     st->have = 1;
 }
 
-/* The noise of channel ch at rest (hx_sat_t). */
+/* The noise of channel ch at rest (hx_sat_t); 0 when no block (nor the
+ * samples of a log shorter than one) looked like rest: the span is then
+ * not judged against it. */
 static double sat_noise(const hx_sat_t *st, int ch)
 {
     double var;
     double sd;
-    if (st->have_block) {
+    if (st->have_rest[ch]) {
         var = st->var_min[ch];
     } else {
         const double m = st->bn > 0 ? st->bs[ch] / (double)st->bn : 0.0;
         var = st->bn > 0 ? st->bss[ch] / (double)st->bn - m * m : 0.0;
+        if (st->bn == 0 || !sat_rest_var(ch, var)) {
+            return 0.0;
+        }
     }
     sd = var > 0.0 ? sqrt(var) : 0.0;
     return sd > st->step[ch] ? sd : st->step[ch];

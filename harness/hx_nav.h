@@ -67,11 +67,21 @@ int hx_nav_param_help_requested(int argc, char **argv);
 #define HX_SAT_BLOCK 64
 /** A channel's extremes must lie more than this many times its noise at
  *  rest apart for its flat tops to be clipping (docs/harness.md, "info",
- *  saturation): a channel spans at most 50 in the 1-s stretches of
+ *  saturation): a channel spans at most 50.1 in the 1-s stretches of
  *  xio_ngimu_gait and openshoe_c_820hz where its flat tops alone call it
- *  clipped (still or slow), a clipped one at least 1,800
- *  (tests/cli/test_replay.sh's clipped walk; scripts/sat_span_noise.py). */
+ *  clipped (still or slow), the clipped walk of tests/cli/test_replay.sh
+ *  at least 1,800 (scripts/sat_span_noise.py). */
 #define HX_SAT_SPAN_NOISE 100.0
+/** The largest standard deviation of a block at rest: 0.12 m/s^2 and
+ *  0.025 rad/s, above the smallest block of every shared walk (at most
+ *  0.063 m/s^2 and 0.0103 rad/s, openshoe_c_820hz's quantised channels)
+ *  and under every block of a walk at 100 Hz without standing (at least
+ *  0.21 m/s^2 and 0.062 rad/s: vectors/walk.bin's moving part at 100 Hz);
+ *  scripts/sat_span_noise.py --rest. A log with no block under them (it
+ *  never rests: a run, a walk whose blocks all hold a swing) is judged by
+ *  the flat tops alone. */
+#define HX_SAT_REST_SD_ACCEL 0.12
+#define HX_SAT_REST_SD_GYRO 0.025
 
 /** Flat tops at a channel's extremes, counted sample by sample as `info`
  *  counts them on a whole log (docs/harness.md, "info", saturation): a
@@ -79,9 +89,11 @@ int hx_nav_param_help_requested(int argc, char **argv);
  *  samples with distinct stamps sit exactly at its maximum or minimum and
  *  its extremes lie more than HX_SAT_SPAN_NOISE times its noise at rest
  *  apart. The noise at rest is the smallest standard deviation of a block
- *  of HX_SAT_BLOCK samples (of the first samples while no block is whole),
- *  at least the smallest change between consecutive samples (the step of a
- *  quantised channel too still to vary within a block). */
+ *  of HX_SAT_BLOCK samples at rest (HX_SAT_REST_SD_*; of the first samples
+ *  while no block is whole, if they are at rest), at least the smallest
+ *  change between consecutive samples (the step of a quantised channel too
+ *  still to vary within a block); without a block at rest, the flat tops
+ *  alone. */
 typedef struct {
     double mx[6], mn[6];     /**< extremes so far (ax..az, gx..gz) */
     long cmx[6], cmn[6];     /**< samples at them */
@@ -91,8 +103,8 @@ typedef struct {
     double step[6];          /**< the smallest non-zero change between consecutive samples (0: none yet) */
     double b0[6], bs[6], bss[6]; /**< the current block: its first value, the sums of the values less it and of their squares */
     long bn;                 /**< samples in the current block */
-    double var_min[6];       /**< the smallest variance of a whole block (with have_block) */
-    int have_block;
+    double var_min[6];       /**< the smallest variance of a whole block at rest (with have_rest) */
+    int have_rest[6];        /**< a whole block of the channel was at rest (HX_SAT_REST_SD_*) */
     int64_t t_last_ns;
     int have;
 } hx_sat_t;

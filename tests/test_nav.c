@@ -2573,10 +2573,32 @@ static void test_sat_still_quantised(void **state)
     v[50] = v[51] = 0.5;
     v[150] = v[151] = -0.5;
     assert_int_equal(sat_count_of(0, v, 200), 4);
-    /* fewer samples than a block: the noise of those there */
+    /* fewer samples than a block: the noise of those there (the +-0.5
+     * runs put back to the still values first) */
+    v[50] = v[51] = 0.0;
     v[45] = v[46] = 0.003;
     v[55] = v[56] = -0.003;
     assert_int_equal(sat_count_of(0, v + 40, 20), 0);
+}
+
+/* A channel that never rests (no block of HX_SAT_BLOCK samples within
+ * HX_SAT_REST_SD_ACCEL): its flat tops are judged alone, its motion taken
+ * for no noise. A swing of +-30 m/s^2 clipped at +-20: runs of two at each
+ * extreme in every period, 40 samples at them; the same swing with its
+ * first 64 samples still (a block at rest) is clipped too; fewer samples
+ * than a block, moving: clipped. */
+static void test_sat_never_rests(void **state)
+{
+    double v[256];
+    size_t k;
+    (void)state;
+    for (k = 0; k < 256; k++) {
+        v[k] = 30.0 * sin(2.0 * 3.14159265358979 * (double)k / 25.6);
+        v[k] = v[k] > 20.0 ? 20.0 : v[k] < -20.0 ? -20.0 : v[k];
+    }
+    assert_true(sat_count_of(0, v, 256) > 0);
+    assert_true(sat_count_of(HX_SAT_BLOCK, v, 256) > 0);
+    assert_true(sat_count_of(0, v, 40) > 0);
 }
 
 /* The notes' thresholds at their edges as hx_nav.h words them: "little
@@ -2862,6 +2884,7 @@ int main(void)
         cmocka_unit_test(test_walk_window),
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_sat_still_quantised),
+        cmocka_unit_test(test_sat_never_rests),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),
         cmocka_unit_test(test_long_gap_edge),

@@ -703,6 +703,16 @@ expect_out "^saturation  ax 0 ay 0 az 0 gx 0 gy 0 gz 0$" "a still quantised chan
 if grep -q "input is clipped" "$T/out"; then fail "replay names a still quantised channel clipped"; else pass "no clipping note on a still quantised channel"; fi
 json "$T/stillq.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
     pass "no clipped samples in a still quantised log (replay)" || fail "still quantised JSON: $(cat "$T/pyerr")"
+# a log with no block at rest keeps the flat-top rule alone: its motion is no measure of its noise (taken as
+# one, a clipped run and the clipped walk's moving part at 100 Hz read all 0)
+"$H" sim --motion run --duration 30 --rate 200 --seed 1 --effect saturation:ch=acc:range=40 \
+    --effect saturation:ch=gyro:range=6 --out "$T/crun.csv" >/dev/null 2>&1 || fail "sim a clipped run"
+"$H" convert "$T/crun.csv" "$T/crunmid.csv" --start 8 --end 25 2>/dev/null || fail "cut the clipped run"
+expect_exit 0 "info on a clipped run that never rests" "$H" info "$T/crunmid.csv"
+expect_out "^saturation  ax [1-9][0-9]* .* gy [1-9][0-9]* " "a clipped run's flat tops counted without a block at rest"
+awk -F, 'NR == 1 || (NR >= 5775 && NR <= 13429 && (NR - 5775) % 4 == 0)' "$T/clipped.csv" > "$T/clipmid100.csv"
+expect_exit 0 "info on the clipped walk's moving part at 100 Hz" "$H" info "$T/clipmid100.csv"
+expect_out "^saturation  ax [1-9][0-9]* .* gy [1-9][0-9]* " "the clipped walk at 100 Hz without standing: clipped"
 # ... and a second of standing from a real log (xio_ngimu_gait short_walk:
 # its gx takes 31 values 0.062 deg/s apart; info said gx 6)
 if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
