@@ -96,18 +96,20 @@ static void warn_csv_drops(const char *path, const hx_meta_t *m, const char *out
     if (to == HX_FMT_BIN || (to == HX_FMT_AUTO && hx_ends_in(out, strlen(out), ".bin"))) {
         return; /* hx_writer_open's choice: a .bin keeps them all */
     }
-    if (m->has_seq) {
+    /* the counter, unless the time stamps are made of it (ipol's, square2's
+     * and PicoQuake's: count / rate, so the CSV's stamps keep its gaps) */
+    if (m->has_seq && m->format != HX_FMT_IPOL && m->format != HX_FMT_SQUARE2 && m->format != HX_FMT_PICOQUAKE) {
         snprintf(what, sizeof what, ", the sensor's counter (seq, by which info counts drops)");
     }
-    if (m->format == HX_FMT_BIN) {
-        len = strlen(what);
-        if (m->sensor[0] != '\0' && strcmp(m->sensor, "unknown") != 0) {
-            snprintf(what + len, sizeof what - len, ", the sensor name '%s'", m->sensor);
-        }
-        len = strlen(what);
-        if (m->axes[0] != '\0') {
-            snprintf(what + len, sizeof what - len, ", the axis note '%s'", m->axes);
-        }
+    /* the sensor's name and the axis note, a .bin header's or an
+     * importer's (info on the CSV reads 'sensor unknown') */
+    len = strlen(what);
+    if (m->sensor[0] != '\0' && strcmp(m->sensor, "unknown") != 0) {
+        snprintf(what + len, sizeof what - len, ", the sensor name '%s'", m->sensor);
+    }
+    len = strlen(what);
+    if (m->axes[0] != '\0') {
+        snprintf(what + len, sizeof what - len, ", the axis note '%s'", m->axes);
     }
     if (what[0] != '\0') {
         hx_warn("convert", "%s: the CSV has no place for %s: not written (a .bin keeps them: --to bin)", path,

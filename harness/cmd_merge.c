@@ -137,8 +137,8 @@ int hx_cmd_merge(int argc, char **argv)
         }
         if (f[k].time_asked != NULL) {
             hx_warn("merge", "%s: time '%s' names its unit: read in %s, not in the %s of --units time=%s (the unit "
-                             "of a time whose name gives none)", a.pos[k], f[k].cols[0], f[k].time_unit,
-                    f[k].time_asked, f[k].time_asked);
+                             "of a time whose name gives none; a name that gives the wrong unit is mended in the "
+                             "header)", a.pos[k], f[k].cols[0], f[k].time_unit, f[k].time_asked, f[k].time_asked);
         }
         if (f[k].steps_back > 0) {
             hx_warn("merge", "%s: %ld row%s whose stamp is not after the one before dropped", a.pos[k],

@@ -453,11 +453,12 @@ const char *hx_decimal_mix_text(const hx_decimal_mix_t *m, const char *path, cha
 {
     const int point_later = m->point_line >= m->comma_line;
     snprintf(buf, size, "%s:%ld: a number with a decimal %s ('%s') in a log whose numbers have decimal %s ('%s', "
-                        "line %ld): both read as decimal marks (a point that is a thousands separator, '1.002' for "
+                        "line %ld): both read as decimal marks (a %s that is a thousands separator, '%s' for "
                         "1002, is misread: export the log with one decimal mark)",
              path, point_later ? m->point_line : m->comma_line, point_later ? "point" : "comma",
              point_later ? m->point : m->comma, point_later ? "commas" : "points", point_later ? m->comma : m->point,
-             point_later ? m->comma_line : m->point_line);
+             point_later ? m->comma_line : m->point_line, point_later ? "point" : "comma",
+             point_later ? "1.002" : "1,002");
     return buf;
 }
 

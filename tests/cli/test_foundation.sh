@@ -274,6 +274,16 @@ expect_err "walk_seq.bin: the CSV has no place for the sensor's counter (seq, by
     "convert bin->csv: the counter dropped, said"
 expect_exit 0 "convert --rate to csv" "$H" convert "$T/walk_seq.bin" "$T/seqr.csv" --rate 100
 expect_err "walk_seq.bin: the CSV has no place for the sensor name 'x-io NGIMU', the axis note" "convert --rate to csv: the header's text dropped, said"
+# an importer's sensor name and axis note are named too; its counter not where the time stamps are made of it
+# (ipol's: PacketCounter / rate, the CSV's stamps keep its gaps; the review read "no place for the counter")
+. tests/cli/datadir.sh
+if [ -n "$D" ] && [ -f "$D/ipol_gait_xsens/1-1_lf.txt" ]; then
+    expect_exit 0 "convert an ipol file to csv" "$H" convert "$D/ipol_gait_xsens/1-1_lf.txt" "$T/ipol.csv"
+    expect_err "1-1_lf.txt: the CSV has no place for the sensor name 'Xsens MTw Awinda', the axis note" \
+        "convert ipol->csv: the importer's sensor name named"
+    if grep -q "counter" "$T/err"; then fail "convert ipol->csv: its counter named, though the stamps keep it"
+    else pass "convert ipol->csv: its counter not named (the stamps are made of it)"; fi
+fi
 expect_exit 0 "convert a .bin to .bin" "$H" convert "$T/walk_seq.bin" "$T/seq2.bin"
 if grep -q "no place" "$T/err"; then fail "convert bin->bin: a warning though nothing is dropped"; else pass "convert bin->bin: nothing said"; fi
 # the extension in any case: OUT.BIN is a .bin (not written as CSV)
@@ -574,6 +584,8 @@ PYEOF
 expect_exit 0 "decimal points, then commas" "$H" info "$T/decmix2.csv"
 expect_err "decmix2.csv:3: a number with a decimal comma ('0,007531643') in a log whose numbers have decimal points ('0.000000000', line 2)" \
     "decimal points then commas: the first comma's line named"
+expect_err "decmix2.csv:3: .*(a comma that is a thousands separator, '1,002' for 1002, is misread" \
+    "decimal points then commas: the comma named as the thousands separator"
 # with commas between the fields a decimal comma is ambiguous: refused, said
 printf 't,ax,ay,az,gx,gy,gz\n"0,00","0,5","0,2","9,8","0,1","0,2","0,3"\n' >"$T/deccomma_c.csv"
 expect_exit 1 "decimal commas between commas" "$H" info "$T/deccomma_c.csv"

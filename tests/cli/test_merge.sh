@@ -487,6 +487,8 @@ expect_err "c_accms.csv: 300 samples, 100 Hz, 2.99 s; time 'time (ms)' in ms" "m
 expect_err "c_gyrns.csv: 300 samples, 100 Hz, 2.99 s; time 'time' in ns" "merge: --units time= reads the bare time"
 expect_err "warning: .*c_accms.csv: time 'time (ms)' names its unit: read in ms, not in the ns of --units time=ns" \
     "merge: the --units time not read is said"
+expect_err "c_accms.csv: time 'time (ms)' names its unit: .*a name that gives the wrong unit is mended in the header)" \
+    "merge: the remedy for a wrong named unit said"
 if [ "$(tail -n 1 "$T/o.csv" | cut -d, -f1)" = "2.990000000" ] && [ "$(grep -c . "$T/o.csv")" -eq 301 ]; then
     pass "merge: 300 samples to 2.99 s"
 else
