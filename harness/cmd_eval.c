@@ -280,7 +280,7 @@ static void md_code(FILE *f, const char *a, const char *b)
             last = *c;
         }
     }
-    pad = first == '`' || last == '`';
+    pad = first == '`' || last == '`' || (first == ' ' && last == ' '); /* CommonMark strips one space each side */
     for (k = 0; k <= longest; k++) {
         fputc('`', f);
     }

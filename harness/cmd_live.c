@@ -466,8 +466,8 @@ static int update_recording_header(live_t *L)
 {
     hx_meta_t meta;
     recording_meta(L, &meta);
-    if (L->rec == NULL || !L->have_info ||
-        (L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && L->hdr_info.flags == L->info.flags &&
+    if (L->rec == NULL || (!L->have_info && L->hdr_has_temp == meta.has_temp) ||
+        (L->have_info && L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && L->hdr_info.flags == L->info.flags &&
          strcmp(L->hdr_info.sensor, L->info.sensor) == 0 && strcmp(L->hdr_info.axes, L->info.axes) == 0 &&
          !L->rate_changed && L->hdr_has_temp == meta.has_temp && L->hdr_has_seq == meta.has_seq)) {
         return 0;
@@ -1329,7 +1329,12 @@ int hx_cmd_live(int argc, char **argv)
     hx_serial_close(port);
 
     /* the recording first: it must be complete whatever happens below */
-    if (update_recording_header(&L)) {
+    const int rewritten = update_recording_header(&L);
+    if (rewritten && !L.have_info) {
+        /* no INFO: the samples' own temperatures, the first ones without */
+        fprintf(stderr, "harness live: %s: the header was written again at the end: samples after the first carried "
+                        "a temperature (no INFO frame came)\n", L.record_path);
+    } else if (rewritten) {
         const int info_changed = !L.hdr_has_info || L.hdr_info.rate_hz != L.info.rate_hz ||
                                  L.hdr_info.flags != L.info.flags || strcmp(L.hdr_info.sensor, L.info.sensor) != 0 ||
                                  strcmp(L.hdr_info.axes, L.info.axes) != 0;

@@ -2766,7 +2766,12 @@ const char *hx_stdin_hint(const char *path, int err)
     if (strcmp(path, "-") != 0 || err != ENOENT) {
         return "";
     }
-    snprintf(hint, sizeof hint, ": for standard input give /dev/stdin (`... | harness %s /dev/stdin`)", hx_cmd_name);
+    snprintf(hint, sizeof hint, ": for standard input give /dev/stdin (`... | harness %s /dev/stdin%s`)", hx_cmd_name,
+             strcmp(hx_cmd_name, "info") == 0 || strcmp(hx_cmd_name, "replay") == 0 ||
+                     strcmp(hx_cmd_name, "allan") == 0 || strcmp(hx_cmd_name, "psd") == 0 ||
+                     strcmp(hx_cmd_name, "simgap") == 0
+                 ? ""
+                 : " ...");
     return hint;
 }
 

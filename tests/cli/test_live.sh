@@ -620,6 +620,15 @@ expect_rc "$LIVE_RC" 0 "live when the samples carry a temperature the INFO does 
 grep_in "$T/live.err" "sample frame seq 1 carries a temperature, but the sender's INFO frame says its samples have none (flags bit 1): the temperatures are not recorded" "the temperatures discarded are said"
 reads_back rec_tden.bin 300 "the recording reads back without temperatures"
 if grep -q "carries a temperature" "$T/info.out"; then fail "the recording holds temperatures its header denies"; cat "$T/info.out"; else pass "no temperature warning on the recording"; fi
+# no INFO: temperatures that start after the first sample set the header's bit at the end (the header written
+# at the first sample had none, and the recording read as "a writer's fault?", no temperature read)
+live_case tempnoinfo rec_tni.bin 5
+expect_rc "$LIVE_RC" 0 "live when the samples' temperatures start after the first sample, no INFO"
+grep_in "$T/live.err" "the header was written again at the end: samples after the first carried a temperature (no INFO frame came)" "the rewrite is said"
+timeout $LIMIT "$H" info "$T/rec_tni.bin" >"$T/info.out" 2>&1
+expect_rc $? 0 "the recording reads back"
+grep_in "$T/info.out" "samples     200 (with temperature)$" "it holds 200 samples, their temperatures read"
+if grep -q "carries a temperature" "$T/info.out"; then fail "the recording's header denies its temperatures"; cat "$T/info.out"; else pass "the header covers the temperatures recorded"; fi
 live_case seqon rec_sqon.bin 5
 expect_rc "$LIVE_RC" 0 "live when the INFO starts announcing a sensor counter mid-session"
 grep_in "$T/live.err" "the header was written again at the end with the sender's last INFO frame (it changed during the session; samples came without the sensor counter it announces: the header gives none)" "the counter bit cleared is said"

@@ -53,6 +53,8 @@ usage: wire_cases.py CASE OUT
   seqon     INFO flags 1 (no counter), 100 samples whose seq is a running
             index from 0, INFO flags 5 (counter), 100 samples with the
             sensor's counter from 5000, END
+  tempnoinfo no INFO frame: 100 samples without a temperature, 100 with
+            one (25 degC), END
 """
 import math
 import os
@@ -210,7 +212,7 @@ def main():
     elif case == 'newtype':
         b = info(400.0) + samples(100) + frame(6, 101, bytes(45)) + b''.join(
             frame(SAMPLE, k + 2, still(k)) for k in range(100, 200)) + end(202, 200)
-    elif case in ('tempoff', 'tempdenied', 'seqon'):
+    elif case in ('tempoff', 'tempdenied', 'seqon', 'tempnoinfo'):
         def smp(k, fseq, flags, temp, c=None):
             return frame(SAMPLE, fseq, sample_payload(k * DT_NS, k if c is None else c, flags, (0.0, 0.0, 9.81),
                                                       (0.0, 0.0, 0.0), temp))
@@ -220,6 +222,9 @@ def main():
             b += end(202, 200)
         elif case == 'tempdenied':
             b = info(400.0, 5) + b''.join(smp(k, k + 1, 3, 25.0) for k in range(300)) + end(301, 300)
+        elif case == 'tempnoinfo':
+            b = b''.join(smp(k, k + 1, 2, math.nan) for k in range(100))
+            b += b''.join(smp(k, k + 1, 3, 25.0) for k in range(100, 200)) + end(201, 200)
         else:
             b = info(400.0, 1) + b''.join(smp(k, k + 1, 0, 0.0) for k in range(100))
             b += info(400.0, 5, 'test sender', 101) + b''.join(smp(k, k + 2, 2, 0.0, 4900 + k)
