@@ -5,7 +5,6 @@
 #include "hx_merge.h"
 #include "hx_names.h"
 #include "hx_xsens.h"
-#include "hx_cli.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -2762,17 +2761,7 @@ static int ug_plausible(double v)
 
 const char *hx_stdin_hint(const char *path, int err)
 {
-    static char hint[96];
-    if (strcmp(path, "-") != 0 || err != ENOENT) {
-        return "";
-    }
-    snprintf(hint, sizeof hint, ": for standard input give /dev/stdin (`... | harness %s /dev/stdin%s`)", hx_cmd_name,
-             strcmp(hx_cmd_name, "info") == 0 || strcmp(hx_cmd_name, "replay") == 0 ||
-                     strcmp(hx_cmd_name, "allan") == 0 || strcmp(hx_cmd_name, "psd") == 0 ||
-                     strcmp(hx_cmd_name, "simgap") == 0
-                 ? ""
-                 : " ...");
-    return hint;
+    return strcmp(path, "-") == 0 && err == ENOENT ? ": for standard input give /dev/stdin (a pipe is read)" : "";
 }
 
 int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size)

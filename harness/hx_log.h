@@ -463,10 +463,10 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
  *  The CSV log reader's check and merge's. */
 int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size);
 
-/** ": for standard input give /dev/stdin (`... | harness CMD /dev/stdin`)"
- *  when @p path is "-" and no file of that name could be opened (@p err,
- *  the errno of the failed open, is ENOENT), else "": the remedy after a
- *  "cannot open" of a log (in a static buffer). */
+/** ": for standard input give /dev/stdin (a pipe is read)" when @p path
+ *  is "-" and no file of that name could be opened (@p err, the errno of
+ *  the failed open, is ENOENT), else "": the remedy after a "cannot open"
+ *  of a log. */
 const char *hx_stdin_hint(const char *path, int err);
 /** The lowest rate of a foot-mounted IMU the time-unit remedies aim at,
  *  Hz (hx_time_unit_fix's band is 20 Hz to HX_TIME_RATE_MAX_HZ). */
