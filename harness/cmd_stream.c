@@ -186,6 +186,15 @@ int hx_cmd_stream(int argc, char **argv)
     }
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
+    /* SA_RESTART: a signal that lands inside the kernel's write to the tty
+     * (before any byte went) restarts that write instead of failing it with
+     * EINTR, which libserialport reports as "write() failed" (exit 3, as if
+     * the port had gone; a CI run hit it by chance, tests/cli/eintr_seam.c
+     * puts it there). The handler only sets g_stop: the writes go in slices
+     * of at most 100 ms (hx_serial_write), nanosleep is never restarted, so
+     * the signal is seen as soon as without the flag. */
+    sa.sa_flags = SA_RESTART;
+    sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL); /* as live: its terminal closed (it died without a summary) */

@@ -408,16 +408,35 @@ fi
 stop_link # the block above leaves its link up
 start_link
 start_live --record "$T/rec_i.bin" --timeout 60
-LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream_i.out" 2>&1 &
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream.err" 2>&1 &
 STREAM=$!
 wait_for '[ -f "$T/rec_i.bin" ] && [ "$(records "$T/rec_i.bin")" -ge 300 ]' 300
 kill -INT "$STREAM" 2>/dev/null
 wait "$STREAM"
 expect_rc $? 130 "stream interrupted by SIGINT"
 STREAM=""
-grep_in "$T/stream_i.out" "(interrupted)" "the interrupted stream says so"
+grep_in "$T/stream.err" "(interrupted)" "the interrupted stream says so"
 stop_link
 wait_live
+
+# --- the same signal inside the write itself (tests/cli/eintr_seam.c puts it
+# there; by chance a CI run hit it): the write goes on, the stream stops as
+# interrupted (it was exit 3, "write failed", as if the port had gone)
+if ${CC:-cc} -shared -fPIC -O2 -Wall -o "$T/eintr_seam.so" tests/cli/eintr_seam.c -ldl 2>"$T/cc.err"; then
+    start_link
+    start_live --record "$T/rec_w.bin" --timeout 60
+    EINTR_SEAM_AT=20 LD_PRELOAD="$SEAM $T/eintr_seam.so" timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 \
+        >"$T/stream.err" 2>&1
+    expect_rc $? 130 "stream interrupted by SIGINT inside a write"
+    grep_in "$T/stream.err" "(interrupted)" "the stream says it was interrupted"
+    if grep -q "write failed" "$T/stream.err"; then fail "the interrupted write was called a port failure"; else pass "no port failure said"; fi
+    stop_link
+    wait_live
+    timeout $LIMIT "$H" info "$T/rec_w.bin" >"$T/info.out" 2>&1
+    expect_rc $? 0 "what live recorded of the interrupted stream reads back"
+else
+    fail "cannot build tests/cli/eintr_seam.c: $(cat "$T/cc.err")"
+fi
 
 # --- misbehaving senders (tests/cli/wire_cases.py): whatever live records,
 # its own reader reads; what it refuses is reported and fails the run
