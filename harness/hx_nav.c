@@ -2060,13 +2060,17 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (hx_nav_resample_progress(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs,
                                      show ? stage_progress : NULL, &stage, err, err_size) != 0) {
             hx_line_break(); /* a progress line left open: the error follows */
-            hx_log_free(&raw);
-            if (span_n < 4u) {
+            if (span_n < 4u && lrc > 0) {
+                /* the reader stopped early: its error is the cause (it
+                 * said only "too few samples to resample (2)") */
+                snprintf(err, err_size, "%s (the %zu samples before it are too few to resample)", raw.error, span_n);
+            } else if (span_n < 4u) {
                 /* too few samples: named by the file as convert --rate
                  * names it (the resampler's other errors say the file's
                  * rate or stamps and keep their wording) */
                 snprintf(err, err_size, "%s: too few samples to resample (%zu)", path, span_n);
             }
+            hx_log_free(&raw);
             return -1;
         }
         hx_progress_end(&stage);
