@@ -462,12 +462,22 @@ static int open_recording(live_t *L)
  * a sender already running: the reference firmware sends INFO once), or
  * that changed, is written into the recording's header, which was written
  * at the first sample; 1 when it was. */
+/* the INFO flag bits a header holds: a bit of a newer sender's, which this
+ * receiver ignores (docs/wire-protocol.md), changes nothing recorded, and an
+ * INFO that differed only there rewrote the header, "it changed during the
+ * session" */
+#define LIVE_INFO_FLAGS_KNOWN (FNAV_WIRE_INFO_RATE_NOMINAL | FNAV_WIRE_INFO_TEMP | FNAV_WIRE_INFO_SEQ)
+static int info_flags_differ(const fnav_wire_info_t *a, const fnav_wire_info_t *b)
+{
+    return ((a->flags ^ b->flags) & LIVE_INFO_FLAGS_KNOWN) != 0u;
+}
+
 static int update_recording_header(live_t *L)
 {
     hx_meta_t meta;
     recording_meta(L, &meta);
     if (L->rec == NULL || (!L->have_info && L->hdr_has_temp == meta.has_temp) ||
-        (L->have_info && L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && L->hdr_info.flags == L->info.flags &&
+        (L->have_info && L->hdr_has_info && L->hdr_info.rate_hz == L->info.rate_hz && !info_flags_differ(&L->hdr_info, &L->info) &&
          strcmp(L->hdr_info.sensor, L->info.sensor) == 0 && strcmp(L->hdr_info.axes, L->info.axes) == 0 &&
          !L->rate_changed && L->hdr_has_temp == meta.has_temp && L->hdr_has_seq == meta.has_seq)) {
         return 0;
@@ -1336,7 +1346,7 @@ int hx_cmd_live(int argc, char **argv)
                         "a temperature (no INFO frame came)\n", L.record_path);
     } else if (rewritten) {
         const int info_changed = !L.hdr_has_info || L.hdr_info.rate_hz != L.info.rate_hz ||
-                                 L.hdr_info.flags != L.info.flags || strcmp(L.hdr_info.sensor, L.info.sensor) != 0 ||
+                                 info_flags_differ(&L.hdr_info, &L.info) || strcmp(L.hdr_info.sensor, L.info.sensor) != 0 ||
                                  strcmp(L.hdr_info.axes, L.info.axes) != 0;
         const int no_seq = (L.info.flags & FNAV_WIRE_INFO_SEQ) != 0u && L.seq_undeclared;
         fprintf(stderr, "harness live: %s: the header was written again at the end with the sender's last INFO "

@@ -626,6 +626,12 @@ expect_rc "$LIVE_RC" 0 "live when the INFO changes the rate"
 grep_in "$T/live.err" "the sender's INFO frame seq 101 changes its rate from 400 to 100 Hz" "the change is warned"
 reads_back rec_rc.bin 200 "the recording reads back whole"
 if grep -q "(nominal)" "$T/info.out"; then fail "the header keeps a nominal rate that changed"; else pass "the header gives no nominal rate"; fi
+# an INFO that differs only in a flag bit this receiver does not know (a
+# newer sender's) changes nothing recorded: no rewrite said
+live_case newflag rec_nf.bin 5
+expect_rc "$LIVE_RC" 0 "live when a later INFO adds an unknown flag bit"
+if grep -q "written again" "$T/live.err"; then fail "the header rewritten for an unknown flag bit"; cat "$T/live.err"; else pass "no header rewrite for an unknown flag bit"; fi
+reads_back rec_nf.bin 200 "the recording reads back whole"
 # the header's temperature and counter bits cover what the recording holds:
 # an INFO that stops announcing a temperature mid-session keeps the ones
 # recorded under it readable (the header said none, and info called it a

@@ -33,6 +33,8 @@ usage: wire_cases.py CASE OUT
             nominal rate, temperature, counter; name 'IMU-X'), 200 more, END
   ratechange INFO at 400 Hz (nominal), 100 samples, INFO at 100 Hz, 100
             samples, END
+  newflag   INFO flags 5, 100 samples, the same INFO with bit 7 set too (a
+            newer sender's flag), 100 samples, END
   ctlname   an INFO frame whose name holds a line break and an escape
             sequence, 300 samples, END
   reboot    Unix-time stamps: 200 samples, the sender reboots (INFO with
@@ -185,6 +187,9 @@ def main():
             for k in range(100, 300)) + end(302, 300)
     elif case == 'ratechange':
         b = info(400.0, 5) + samples(100) + info(100.0, 5, 'test sender', 101)
+        b += b''.join(frame(SAMPLE, 2 + k, still(k)) for k in range(100, 200)) + end(202, 200)
+    elif case == 'newflag':
+        b = info(400.0, 5) + samples(100) + info(400.0, 5 | 0x80, 'test sender', 101)
         b += b''.join(frame(SAMPLE, 2 + k, still(k)) for k in range(100, 200)) + end(202, 200)
     elif case == 'ctlname':
         b = info(400.0, 4, 'IMU\n"x"\x1b[2J') + samples(300) + end(301, 300)
