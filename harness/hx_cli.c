@@ -787,6 +787,16 @@ void hx_stop_on_signals(const char *cmd, const char *how)
     (void)sigaction(SIGTERM, NULL, &g_stop_old_term);
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = stop_handler;
+    /* SA_RESTART: the handler only sets hx_stop_sig, which the long loops
+     * look at between runs and cases, so a write it lands in goes on (a
+     * case's line to a terminal stopped by Ctrl-S or slow to take it: the
+     * kernel's tty write waits for room). Interrupted, the write failed
+     * with EINTR and stdio dropped what it held: the line of a case the
+     * summary counts was lost (tests/cli/stop_tty.py). Nothing these
+     * commands do under the handler waits for the signal to cut it short:
+     * no read of a terminal or pipe, and pclose retries its wait. A second
+     * signal still quits at once: the handler puts the actions before back. */
+    sa.sa_flags = SA_RESTART;
     sigemptyset(&sa.sa_mask);
     (void)sigaddset(&sa.sa_mask, SIGINT);
     (void)sigaddset(&sa.sa_mask, SIGTERM);
