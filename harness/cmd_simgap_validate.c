@@ -27,7 +27,7 @@ static const hx_opt_t k_opts[] = {
     { "--walk-only", NULL, "motion-domain (walk) cases only", 0 },
     { "--seeds", "N", "twins per model in the diagnosis (default 16)", 0 },
     { "--mag-range", "LO,HI", "magnitudes as multiples of the detectable threshold (default 1,10; 0.001 <= LO <= HI <= 1000)", 0 },
-    { "--json", "FILE", "every case and its score as JSON", 0 },
+    { "--json", "FILE", "every case and its score as JSON ('-': standard output, the text then on standard error)", 0 },
     { "--markdown", "FILE", "the summary as Markdown (docs/simgap-validation.md)", 0 },
     { "--verbose", NULL, "print the diagnosis of every case", 0 },
     { "--effects", "LIST", "draw only these effects (comma-separated names; control for controls)", 0 },

@@ -174,6 +174,14 @@ json "$T/wc.json" 'all(r["diagnosis_seed"] == (j["seed"] + 20000 * r["case"]) % 
 expect_exit 0 "--help" "$H" simgap-validate --help
 expect_out "case i owns the seeds S + 20000 i ... S + 20000 i + 19999" "--help: case i's seeds"
 expect_out "two runs share nothing when their seeds are at least 20000 x --cases apart" "--help: independent runs"
+# --json - is standard output, as psd's and allan's: --help says so (it
+# said "every case and its score as JSON" alone), and standard output holds
+# the JSON alone, the case lines and summary on standard error
+expect_out "every case and its score as JSON ('-': standard output, the text then on standard error)" "--help: --json - named"
+expect_exit 0 "--json -" "$H" simgap-validate --cases 1 $FAST --json -
+json "$T/out" "j['schema'] == 'footnav-simgap-validate/1' and j['cases'] == 1" && pass "--json -: standard output is the JSON" ||
+    fail "--json -: standard output is no JSON: $(cat "$T/pyerr")"
+expect_err "^case   0 " "--json -: the case line on standard error"
 # make simgap-validation's controls take the first seed past the first run's cases, derived from SIMGAP_SEED and
 # SIMGAP_CASES (Makefile), not a constant: before, SIMGAP_CASES=41 gave the controls 800001, its case 40's seeds
 R=$(dirname "$0")/../..
