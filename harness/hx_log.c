@@ -430,6 +430,18 @@ static int decimal_comma(const char *s)
     return decimal_mark_is(s, ',');
 }
 
+/* A field kept for the decimal-mix warning: whole when it fits, else cut
+ * with "..." in the buffer, as the harness's other cut texts end ('%.40s...'):
+ * a number of 30 digits quoted as its first 23 read as the field itself. */
+static void mix_field(char *dst, size_t size, const char *s)
+{
+    if (strlen(s) < size) {
+        snprintf(dst, size, "%s", s);
+    } else {
+        snprintf(dst, size, "%.*s...", (int)(size - 4u), s);
+    }
+}
+
 int hx_decimal_mix_note(hx_decimal_mix_t *m, const char *s, long line)
 {
     if (m->said) {
@@ -437,10 +449,10 @@ int hx_decimal_mix_note(hx_decimal_mix_t *m, const char *s, long line)
     }
     if (m->comma_line == 0 && decimal_mark_is(s, ',')) {
         m->comma_line = line;
-        snprintf(m->comma, sizeof m->comma, "%s", s);
+        mix_field(m->comma, sizeof m->comma, s);
     } else if (m->point_line == 0 && decimal_mark_is(s, '.')) {
         m->point_line = line;
-        snprintf(m->point, sizeof m->point, "%s", s);
+        mix_field(m->point, sizeof m->point, s);
     } else {
         return 0;
     }

@@ -435,7 +435,7 @@ const char *hx_field_count_text(const char *path, long first, long rows, long ch
  *  comma-separated): the first of each, and whether said. Zeroed to start. */
 typedef struct {
     long comma_line, point_line; /**< their lines, 0 none yet */
-    char comma[24], point[24];   /**< their fields, cut to 23 bytes */
+    char comma[24], point[24];   /**< their fields; one longer than 23 bytes cut to 20 and "..." */
     int said;                    /**< the warning was due once */
 } hx_decimal_mix_t;
 /** Note field s of line: 1 when it makes the log's numbers hold both

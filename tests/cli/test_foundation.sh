@@ -606,6 +606,17 @@ for k in ("file", "log", "command", "path"):
     a.pop(k, None); b.pop(k, None)
 sys.exit(0 if a == b else 1)
 PYEOF
+# a field longer than the 23 bytes kept is cut with a mark, "..." inside
+# the quotes (it was cut without one, and read as the whole field); one of
+# 23 bytes is quoted whole, without it
+sed '101s/,/./g; 101s/^0\.251056671;/0.251056671000000000001234;/' "$T/deccomma.csv" >"$T/decmix_long.csv"
+expect_exit 0 "decimal commas, a row with a long point field" "$H" info "$T/decmix_long.csv"
+expect_err "decmix_long.csv:101: a number with a decimal point ('0\\.251056671000000000\\.\\.\\.') in a log whose numbers have decimal commas ('0,000000000', line 2)" \
+    "decimal commas and points: a field of 26 bytes cut with '...'"
+sed '101s/,/./g; 101s/^0\.251056671;/0.251056671000000000001;/' "$T/deccomma.csv" >"$T/decmix_23.csv"
+expect_exit 0 "decimal commas, a row with a point field of 23 bytes" "$H" info "$T/decmix_23.csv"
+expect_err "decmix_23.csv:101: a number with a decimal point ('0\\.251056671000000000001') in a log" \
+    "decimal commas and points: a field of 23 bytes quoted whole, no mark"
 { head -2 "$T/a.csv" | tr ',' ';'; sed -n '3,$p' "$T/deccomma.csv"; } >"$T/decmix2.csv"
 expect_exit 0 "decimal points, then commas" "$H" info "$T/decmix2.csv"
 expect_err "decmix2.csv:3: a number with a decimal comma ('0,007531643') in a log whose numbers have decimal points ('0.000000000', line 2)" \
