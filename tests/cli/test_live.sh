@@ -424,7 +424,7 @@ wait_live
 # interrupted (it was exit 3, "write failed", as if the port had gone)
 if ${CC:-cc} -shared -fPIC -O2 -Wall -o "$T/eintr_seam.so" tests/cli/eintr_seam.c -ldl 2>"$T/cc.err"; then
     start_link
-    start_live --record "$T/rec_w.bin" --timeout 60
+    start_live --timeout 60
     EINTR_SEAM_AT=20 LD_PRELOAD="$SEAM $T/eintr_seam.so" timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 \
         >"$T/stream.err" 2>&1
     expect_rc $? 130 "stream interrupted by SIGINT inside a write"
@@ -432,8 +432,6 @@ if ${CC:-cc} -shared -fPIC -O2 -Wall -o "$T/eintr_seam.so" tests/cli/eintr_seam.
     if grep -q "write failed" "$T/stream.err"; then fail "the interrupted write was called a port failure"; else pass "no port failure said"; fi
     stop_link
     wait_live
-    timeout $LIMIT "$H" info "$T/rec_w.bin" >"$T/info.out" 2>&1
-    expect_rc $? 0 "what live recorded of the interrupted stream reads back"
 else
     fail "cannot build tests/cli/eintr_seam.c: $(cat "$T/cc.err")"
 fi
