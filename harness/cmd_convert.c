@@ -87,11 +87,12 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
 /* What the CSV cannot carry of the input's (docs/log-format.md, "CSV
  * interchange": t,ax,...,gz[,temp]): the sensor's own counter, and a .bin
  * header's sensor name (not the 'unknown' of a log that named none), axis
- * note, nominal-rate flag and source, said in one line (they were dropped
- * without a word: a .bin to CSV and back read 'sensor unknown', its drops
- * no longer counted, its rate an estimate). on_grid: the samples written
- * are resampled to the rate (convert --rate). */
-static void warn_csv_drops(const char *path, const hx_meta_t *m, const char *out, hx_format_t to, int on_grid)
+ * note and nominal-rate flag, said in one line (they were dropped without a
+ * word: a .bin to CSV and back read 'sensor unknown', its drops no longer
+ * counted, its rate an estimate). Not the header's source: no command
+ * shows it (info does not), and every .bin has one, so the warning would
+ * fire on every .bin to CSV, a CSV made into a .bin and back too. */
+static void warn_csv_drops(const char *path, const hx_meta_t *m, const char *out, hx_format_t to)
 {
     char what[512] = "";
     size_t len;
@@ -113,23 +114,17 @@ static void warn_csv_drops(const char *path, const hx_meta_t *m, const char *out
     if (m->axes[0] != '\0') {
         snprintf(what + len, sizeof what - len, ", the axis note '%s'", m->axes);
     }
-    /* a .bin header's flag that its rate is the sensor's: a CSV's rate is
-     * always estimated from its stamps (hx_reader_open), the same figure
-     * where they keep the rate, but read as the stamps' (info: not
-     * "nominal"; simgap, allan and psd take the estimate, the stated-rate
-     * check is gone). Not an importer's, whose stamps are made of its rate
-     * (count / rate) or checked against it (MT Manager's SampleTimeFine),
-     * nor --rate's, whose stamps are on its grid. */
+    /* a .bin header's flag that its rate is the sensor's (with --rate too,
+     * the grid's): a CSV's rate is always estimated from its stamps
+     * (hx_reader_open), the same figure where they keep the rate, but read
+     * as the stamps' (info: not "nominal"; simgap, allan and psd take the
+     * estimate, the stated-rate check is gone). Not an importer's, whose
+     * stamps are made of its rate (count / rate) or checked against it (MT
+     * Manager's SampleTimeFine): the input had no flag a user set. */
     len = strlen(what);
-    if (m->format == HX_FMT_BIN && m->rate_nominal && m->rate_hz > 0.0 && !on_grid) {
+    if (m->format == HX_FMT_BIN && m->rate_nominal && m->rate_hz > 0.0) {
         snprintf(what + len, sizeof what - len, ", the flag that %.6g Hz is the sensor's nominal rate (a CSV's is "
                  "estimated from its stamps)", m->rate_hz);
-    }
-    /* a .bin header's source (sim's command, live's, the file a convert
-     * read); a text input's is its own path, nothing lost */
-    len = strlen(what);
-    if (m->format == HX_FMT_BIN && m->source[0] != '\0') {
-        snprintf(what + len, sizeof what - len, ", the source '%s'", m->source);
     }
     if (what[0] != '\0') {
         hx_warn("convert", "%s: the CSV has no place for %s: not written (a .bin keeps them: --to bin)", path,
@@ -198,7 +193,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
         return HX_EXIT_IO;
     }
     hx_warn_gz_output("convert", a->pos[1], to);
-    warn_csv_drops(a->pos[0], &res.meta, a->pos[1], to, 1);
+    warn_csv_drops(a->pos[0], &res.meta, a->pos[1], to);
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
         if (!in_window(wd, s.t_ns)) {
@@ -285,7 +280,7 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_IO;
     }
     hx_warn_gz_output("convert", a.pos[1], to);
-    warn_csv_drops(a.pos[0], &meta, a.pos[1], to, 0);
+    warn_csv_drops(a.pos[0], &meta, a.pos[1], to);
     /* a long log shows progress (a day at 100 Hz takes 11 s to CSV) */
     hx_progress_start(&pr, "convert", 1.0);
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {

@@ -2063,7 +2063,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             if (span_n < 4u && lrc > 0) {
                 /* the reader stopped early: its error is the cause (it
                  * said only "too few samples to resample (2)") */
-                snprintf(err, err_size, "%s (the %zu samples before it are too few to resample)", raw.error, span_n);
+                snprintf(err, err_size, "%s (only %zu sample%s read: too few to resample)", raw.error, span_n,
+                         span_n == 1u ? "" : "s");
             } else if (span_n < 4u) {
                 /* too few samples: named by the file as convert --rate
                  * names it (the resampler's other errors say the file's

@@ -151,7 +151,7 @@ expect_err "^harness convert: error: $T/three.csv: too few samples to resample (
 # "too few samples to resample (2)" alone)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n1,2,x\n0.03,0,0,9.8,0,0,0\n' >"$T/bad3.csv"
 expect_exit 1 "replay --rate of a log with a bad line 4" "$H" replay "$T/bad3.csv" --rate 20
-expect_err "^harness replay: error: $T/bad3.csv:4: 3 columns, expected at least 7 (the 2 samples before it are too few to resample)$" \
+expect_err "^harness replay: error: $T/bad3.csv:4: 3 columns, expected at least 7 (only 2 samples read: too few to resample)$" \
     "replay --rate: the bad line named as the cause"
 
 # --- an accelerometer that reads exactly 0 (disabled, or not written by the

@@ -234,7 +234,7 @@ else
     msg=$("$PY" "$(dirname "$0")/stop_tty.py" "$H" "$T")
     case $? in
     0) pass "a signal inside the write of a case's line to a stopped terminal: the line kept, exit 130" ;;
-    3) echo "SKIP the signal inside a write to a stopped terminal: $msg" ;;
+    3) echo "note: the signal inside a write to a stopped terminal not checked: $msg" ;; # this system's /proc, no tool to install
     *) fail "a signal inside a write to a stopped terminal: $msg" ;;
     esac
 fi
