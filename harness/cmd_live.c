@@ -458,10 +458,6 @@ static int open_recording(live_t *L)
     return 0;
 }
 
-/* At the end: an INFO frame that came after the first sample (live joined
- * a sender already running: the reference firmware sends INFO once), or
- * that changed, is written into the recording's header, which was written
- * at the first sample; 1 when it was. */
 /* the INFO flag bits a header holds: a bit of a newer sender's, which this
  * receiver ignores (docs/wire-protocol.md), changes nothing recorded, and an
  * INFO that differed only there rewrote the header, "it changed during the
@@ -472,6 +468,10 @@ static int info_flags_differ(const fnav_wire_info_t *a, const fnav_wire_info_t *
     return ((a->flags ^ b->flags) & LIVE_INFO_FLAGS_KNOWN) != 0u;
 }
 
+/* At the end: an INFO frame that came after the first sample (live joined
+ * a sender already running: the reference firmware sends INFO once), or
+ * that changed, is written into the recording's header, which was written
+ * at the first sample; 1 when it was. */
 static int update_recording_header(live_t *L)
 {
     hx_meta_t meta;
