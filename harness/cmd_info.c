@@ -296,6 +296,22 @@ static void add_num(cJSON *j, const char *name, double v, const info_t *in)
     }
 }
 
+/* A .bin header's source (docs/log-format.md): the command that wrote
+ * the file (`harness sim --motion walk --seed 1`, `harness live`, ...) or
+ * the file a conversion read; NULL for another format (whose reader puts
+ * the path there) or an empty field. Control characters were read as '?'. */
+static const char *bin_source(const hx_meta_t *meta)
+{
+    return meta->format == HX_FMT_BIN && meta->source[0] != '\0' ? meta->source : NULL;
+}
+
+static void print_source(const hx_meta_t *meta)
+{
+    if (bin_source(meta) != NULL) {
+        printf("source      %s\n", meta->source);
+    }
+}
+
 /* info's JSON, for a log and for one that holds no sample (in->empty:
  * report_empty's, the same keys with the figures null, from this one
  * function rather than a list of its keys kept by hand) */
@@ -308,6 +324,11 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
     cJSON_AddStringToObject(j, "format", hx_format_name(log->meta.format));
     cJSON_AddStringToObject(j, "sensor", log->meta.sensor);
+    if (bin_source(&log->meta) != NULL) {
+        cJSON_AddStringToObject(j, "source", log->meta.source);
+    } else {
+        cJSON_AddNullToObject(j, "source");
+    }
     cJSON_AddNumberToObject(j, "samples", (double)log->n);
     cJSON_AddNumberToObject(j, "rate_hz", in->rate_hz);
     cJSON_AddBoolToObject(j, "rate_nominal", log->meta.rate_nominal);
@@ -449,6 +470,7 @@ static int report_empty(const hx_args_t *a, const char *path)
     printf("file        %s\n", path);
     printf("format      %s\n", hx_format_name(meta.format));
     printf("sensor      %s\n", meta.sensor);
+    print_source(&meta);
     if (meta.axes[0]) {
         printf("axes        %s\n", meta.axes);
     }
@@ -544,6 +566,7 @@ int hx_cmd_info(int argc, char **argv)
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));
     printf("sensor      %s\n", log.meta.sensor);
+    print_source(&log.meta);
     if (log.meta.axes[0]) {
         printf("axes        %s\n", log.meta.axes);
     }

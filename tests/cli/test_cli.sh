@@ -233,6 +233,25 @@ json "$T/sq.json" "j['counter_backwards'] == 0" && json "$T/nc.json" "'counter_b
     pass "counter_backwards 0 with a counter that advances, null without a counter" || fail "counter_backwards: $(cat "$T/pyerr")"
 expect_exit 0 "info, a log with a counter that advances" "$H" info "$T/sq.csv"
 grep -q "^counter" "$T/out" && fail "a counter line for a counter that advances" || pass "no counter line for a counter that advances"
+# a .bin header's source (the command that wrote it, or the file a
+# conversion read) is a `source` line and JSON key, as in a file that holds
+# no sample (the header alone); null for a format whose header has none
+"$H" sim --duration 2 --out "$T/simsrc.bin" > /dev/null 2>&1 || fail "sim for the source check"
+expect_exit 0 "info, a simulated .bin" "$H" info "$T/simsrc.bin" --json "$T/simsrc.json"
+expect_out "^source      harness sim --motion walk --seed 1$" "info: a .bin's source line names the command that wrote it"
+json "$T/simsrc.json" "j['source'] == 'harness sim --motion walk --seed 1'" && pass "JSON source: the .bin header's" ||
+    fail "JSON source: $(grep -o '"source":[^,]*' "$T/simsrc.json")"
+expect_exit 0 "info, a converted .bin" "$H" info "$T/seq.bin"
+expect_out "^source      $T/seq.csv$" "info: a converted .bin's source line names the file read"
+head -c 192 "$T/simsrc.bin" > "$T/srconly.bin"
+expect_exit 1 "info, a .bin header with no sample" "$H" info "$T/srconly.bin" --json "$T/srconly.json"
+expect_out "^source      harness sim --motion walk --seed 1$" "info: the source line of a .bin with no sample"
+json "$T/srconly.json" "j['source'] == 'harness sim --motion walk --seed 1'" && pass "JSON source of a .bin with no sample" ||
+    fail "JSON source, no sample: $(grep -o '"source":[^,]*' "$T/srconly.json")"
+expect_exit 0 "info, a CSV" "$H" info "$T/r.csv"
+grep -q "^source" "$T/out" && fail "a source line for a CSV" || pass "no source line for a CSV (its reader's source is the path)"
+json "$T/nc.json" "'source' in j and j['source'] is None" && pass "JSON source is null for a CSV" ||
+    fail "JSON source of a CSV: $(grep -o '"source":[^,]*' "$T/nc.json")"
 
 # --- a repeated option takes its last value, and so does `--json -`'s claim
 # on standard output: `info LOG --json - --json F` wrote the JSON to F and
