@@ -34,40 +34,37 @@ WRITE_NR = {"x86_64": 1, "aarch64": 64, "riscv64": 64, "loongarch64": 64, "i386"
 LIMIT = 120.0  # seconds for any one wait (ASan builds are slow)
 
 
-VIA_WCHAN = [False]  # the last answer came from /proc/PID/wchan (no usable /proc/PID/syscall)
-
-
 def waits_in_write(pid, fd):
-    """True when pid sleeps inside a write to fd; None when /proc cannot say."""
-    VIA_WCHAN[0] = False
+    """(answer, via_wchan): answer True when pid sleeps inside a write to
+    fd, None when /proc cannot say; via_wchan True when the answer came
+    from /proc/PID/wchan (no usable /proc/PID/syscall)."""
     try:
         with open("/proc/%d/stat" % pid) as f:
             state = f.read().rsplit(")", 1)[1].split()[0]
     except OSError:
-        return False  # gone
+        return False, False  # gone
     if state != "S":
-        return False
+        return False, False
     try:
         with open("/proc/%d/syscall" % pid) as f:
             sc = f.read().split()
     except OSError:
         sc = []
     if WRITE_NR is not None and sc and sc[0] == "running":
-        return False  # caught between calls: asked again
+        return False, False  # caught between calls: asked again
     if WRITE_NR is not None and len(sc) >= 2:
-        return sc[0] == str(WRITE_NR) and int(sc[1], 16) == fd
+        return sc[0] == str(WRITE_NR) and int(sc[1], 16) == fd, False
     try:
         with open("/proc/%d/wchan" % pid) as f:
             wchan = f.read().strip()
     except OSError:
         wchan = "0"
     if wchan in ("", "0"):
-        return None
-    VIA_WCHAN[0] = True
+        return None, False
     # the fd is not known this way: after the signal this holds at once,
     # which does no harm (the signal is pending before the XON that wakes
     # the write)
-    return wchan in ("wait_woken", "n_tty_write")
+    return wchan in ("wait_woken", "n_tty_write"), True
 
 
 def wait_blocked(p, fd, what):
@@ -82,11 +79,11 @@ def wait_blocked(p, fd, what):
             return "the command exited (%d) before %s" % (p.returncode, what)
         if time.monotonic() > t_end:
             return "the command never waited in %s" % what
-        w = waits_in_write(p.pid, fd)
+        w, via_wchan = waits_in_write(p.pid, fd)
         if w is None:
             return "unknown"
         ever = ever or w
-        if VIA_WCHAN[0] and not ever and time.monotonic() - t0 > 10.0:
+        if via_wchan and not ever and time.monotonic() - t0 > 10.0:
             # this kernel names the wait otherwise: nothing to tell by
             return "unknown"
         seen = seen + 1 if w else 0
