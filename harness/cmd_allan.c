@@ -1622,6 +1622,62 @@ static int bound_at_floor(const run_t *R, const chan_t *ch)
 }
 static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
+/* The span of tau about the paper's minimum over which the ADEV stays
+ * within the minimum's confidence interval (at --conf): grid points in
+ * range (in_range) on both sides of i_min, contiguous, whose overlapping
+ * ADEV is at most the minimum's upper bound. Over a flat minimum (a
+ * flicker floor) the lowest point is where the noise put it, and the
+ * paper's t_BS, and with it tau and sigma_bias (eqs. 5-6), can move
+ * anywhere in the span while BS does not (docs/allan.md, "The paper's
+ * identification, as written"). 0 with *lo_s, *hi_s set; 1 so set when
+ * the minimum is the first or last point in range (no minimum there: the
+ * curve still falls or rises, which analyse_channel warns of); -1 when the
+ * minimum has no interval. */
+static int flat_span(const run_t *R, const chan_t *ch, double *lo_s, double *hi_s)
+{
+    const size_t im = ch->id.paper.i_min;
+    double bound;
+    size_t a, b;
+    if (!(ch->id_ok && ch->id.paper_ok) || im >= ch->nres || !in_range(R, &ch->res[im]) || !(ch->hi[im] > 0.0) ||
+        !isfinite(ch->hi[im])) {
+        return -1;
+    }
+    bound = ch->hi[im];
+    for (a = im; a > 0u && in_range(R, &ch->res[a - 1u]) && sqrt((double)ch->res[a - 1u].avar) <= bound; a--) {
+    }
+    for (b = im; b + 1u < ch->nres && in_range(R, &ch->res[b + 1u]) && sqrt((double)ch->res[b + 1u].avar) <= bound;
+         b++) {
+    }
+    *lo_s = (double)ch->res[a].tau / R->rate_hz;
+    *hi_s = (double)ch->res[b].tau / R->rate_hz;
+    return im == 0u || !in_range(R, &ch->res[im - 1u]) || im + 1u >= ch->nres || !in_range(R, &ch->res[im + 1u]);
+}
+
+/* The channels whose flat span reaches past an octave, below the table:
+ * their tau and sigma_bias at the span's ends */
+static void print_flat(const run_t *R)
+{
+    int i, n = 0;
+    char b1[32], b2[32], b3[32];
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        double lo, hi;
+        if (flat_span(R, ch, &lo, &hi) != 0 || hi < 2.0 * lo) { /* no minimum: warned already */
+            continue;
+        }
+        if (n++ == 0) {
+            printf("The paper's t_BS on a flat minimum: the ADEV stays within the minimum's %.1f %% interval over "
+                   "more than an\noctave of tau, where the noise puts the lowest point; the paper's tau and "
+                   "sigma_bias (eqs. 5-6) move\nwith t_BS across it, BS does not (docs/allan.md):\n",
+                   100.0 * R->conf);
+        }
+        printf("%-6s %-6s | t_BS %s s, flat from %s to %s s: tau %.0f to %.0f samples, sigma_bias %.3g to %.3g\n",
+               ch->label, ch->unit, fmt_s(b1, sizeof b1, (double)ch->id.paper.t_bs_s), fmt_s(b2, sizeof b2, lo),
+               fmt_s(b3, sizeof b3, hi), lo * R->rate_hz, hi * R->rate_hz,
+               (double)ch->id.paper.bs / sqrt(lo * R->rate_hz), (double)ch->id.paper.bs / sqrt(hi * R->rate_hz));
+    }
+}
+
 static void print_params(const run_t *R)
 {
     int i, nbound = 0, nother = 0;
@@ -1705,6 +1761,7 @@ static void print_params(const run_t *R)
         }
         printf("\n");
     }
+    print_flat(R);
     for (i = 0; i < R->nch; i++) {
         nother += R->ch[i].id_ok && R->ch[i].id.paper_ok;
     }
@@ -1885,6 +1942,16 @@ static int write_json(const run_t *R, const char *path)
             hx_json_num(p, "t_bs_s", (double)ch->id.paper.t_bs_s);
             hx_json_num(p, "tau_samples", (double)ch->id.paper.tau_samples);
             hx_json_num(p, "sigma_bias", (double)ch->id.paper.sigma_bias);
+            {
+                double lo, hi;
+                if (flat_span(R, ch, &lo, &hi) >= 0) {
+                    cJSON *fl = cJSON_AddArrayToObject(p, "t_bs_flat_s");
+                    cJSON_AddItemToArray(fl, cJSON_CreateNumber(lo));
+                    cJSON_AddItemToArray(fl, cJSON_CreateNumber(hi));
+                } else {
+                    cJSON_AddNullToObject(p, "t_bs_flat_s");
+                }
+            }
             json_quality(p, &ch->id.paper_quality);
             {
                 cJSON *rd = cJSON_AddObjectToObject(p, "reading_drive");

@@ -1098,6 +1098,48 @@ print(bad)
 sys.exit(1 if bad else 0)
 PYEOF
     then pass "10 s of ADIS: no fit without its white noise in the profile"; else fail "10 s of ADIS: white noise lost"; fi
+    # the paper's t_BS on a flat minimum: JSON t_bs_flat_s is the span of tau about the lowest point in range
+    # (tau <= tau_max_s) whose OADEV stays at or under the minimum's upper bound, recomputed here from --out's
+    # table; t_BS lies in it (to float's 1e-6: 983.0401 on a grid point of 983.04 s), and so does the t_BS of the same log without its first 5 s (gy's moves from 193
+    # to 79 s), which the text names for the channels whose span passes an octave
+    if "$PY" - "$T/a.json" "$T/a.csv" <<'PYEOF'
+import json, sys
+j = json.load(open(sys.argv[1]))
+rows = {}
+for line in open(sys.argv[2]):
+    if line.startswith("#") or line.startswith("channel"):
+        continue
+    c = line.strip().split(",")
+    if c[6] != "null" and int(c[10]) > 0 and float(c[2]) <= j["tau_max_s"] * (1 + 1e-9):
+        rows.setdefault(c[0], []).append((float(c[2]), float(c[6]), float(c[8])))
+bad, n = [], 0
+for ch in j["channels"]:
+    r, p = rows[ch["name"]], ch["paper"]
+    im = min(range(len(r)), key=lambda i: r[i][1])
+    a = b = im
+    while a > 0 and r[a - 1][1] <= r[im][2]:
+        a -= 1
+    while b + 1 < len(r) and r[b + 1][1] <= r[im][2]:
+        b += 1
+    n += 1
+    if p["t_bs_flat_s"] != [r[a][0], r[b][0]] or not r[a][0] * (1 - 1e-6) <= p["t_bs_s"] <= r[b][0] * (1 + 1e-6):
+        bad.append((ch["name"], p["t_bs_flat_s"], [r[a][0], r[b][0]], p["t_bs_s"]))
+print(n, bad)
+sys.exit(1 if bad or n != 6 else 0)
+PYEOF
+    then pass "ADIS log 1: t_bs_flat_s is the span within the minimum's interval, t_BS in it"
+    else fail "ADIS log 1: t_bs_flat_s against --out's table"; fi
+    gzip -dc "$A" | sed '2,501d' >"$T/acut.csv"
+    expect_exit 0 "ADIS log 1 without its first 5 s" "$H" allan "$T/acut.csv" --no-sim --json "$T/acut.json"
+    expect_out "^Gyr y  deg/s  | t_BS 79 s, flat from 51.2 to 287 s: tau 5120 to 28672 samples, sigma_bias 0.000117 to 4.95e-05$" \
+        "the paper's t_BS on a flat minimum: the span and its tau and sigma_bias named"
+    grep -q "^Gyr x  deg/s  | t_BS" "$T/out" && fail "a flat span named for gx, whose curve has no minimum in range" ||
+        pass "no flat span named where the curve has no minimum in range (warned)"
+    in_flat_span() { "$PY" -c 'import json, sys; a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+sys.exit(0 if all(p["paper"]["t_bs_flat_s"][0] * (1 - 1e-6) <= q["paper"]["t_bs_s"] <= p["paper"]["t_bs_flat_s"][1] * (1 + 1e-6)
+                  for p, q in zip(a["channels"], b["channels"])) else 1)' "$1" "$2"; }
+    in_flat_span "$T/a.json" "$T/acut.json" && pass "every t_BS of the log cut by 5 s lies in the whole log's flat span" ||
+        fail "t_BS of the cut log outside the whole log's flat span"
     R=$(data allan_reference/derived_thirdparty/adis16405_imu1_oadev_allantools.csv)
     if [ -n "$R" ] && case "$A" in *imu1*) true ;; *) false ;; esac; then
         expect_exit 0 "ADIS log 1, exact estimator" "$H" allan "$A" --estimator exact --per-octave 1 --no-sim --quiet \
