@@ -46,6 +46,15 @@ static int pos_finite(fnav_real_t x)
     return fnav_isfinite(x) && x > FNAV_R(0.0);
 }
 
+/* A noise weight or threshold, which the statistic divides by squared:
+ * its square positive and finite as well (in float32 one below about
+ * 2.6e-23 has a square of 0, every statistic then Inf; one above 1.8e19
+ * an infinite one, its term then 0; test_stance test_config_squares). */
+static int sq_ok(fnav_real_t x)
+{
+    return pos_finite(x) && pos_finite(x * x);
+}
+
 fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_config_t *cfg, uint64_t build_tag,
                                       size_t obj_size, size_t cfg_size)
 {
@@ -60,8 +69,8 @@ fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_confi
     }
     if ((c->detector != FNAV_DETECTOR_SHOE && c->detector != FNAV_DETECTOR_THRESHOLD) ||
         !(fnav_isfinite(c->rate_hz) && c->rate_hz >= FNAV_R(0.0)) || !pos_finite(c->window_s) ||
-        !pos_finite(c->sigma_a_mps2) || !pos_finite(c->sigma_g_rps) || !pos_finite(c->gamma) ||
-        !pos_finite(c->gyro_thresh_rps) || !pos_finite(c->accel_thresh_mps2) || !pos_finite(c->gravity_mps2) ||
+        !sq_ok(c->sigma_a_mps2) || !sq_ok(c->sigma_g_rps) || !pos_finite(c->gamma) ||
+        !sq_ok(c->gyro_thresh_rps) || !sq_ok(c->accel_thresh_mps2) || !pos_finite(c->gravity_mps2) ||
         (c->adaptive != 0 && c->adaptive != 1) || !pos_finite(c->floor_window_s) ||
         !(fnav_isfinite(c->margin_dec) && c->margin_dec >= FNAV_R(0.0)) ||
         !(fnav_isfinite(c->adapt_max_ratio) && c->adapt_max_ratio >= FNAV_R(1.0)) ||

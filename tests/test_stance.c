@@ -152,6 +152,44 @@ static void test_config(void **state)
     }
 }
 
+/* The detector's noise weights and thresholds enter the statistic as
+ * their squares (T = sum |f - g u|^2 / sigma_a^2 + ...): one whose square
+ * is 0 or infinite in the working precision is refused, as the filter's
+ * sds are (fnav_ukf.h). Accepted, sigma_a = 1e-25 in float made every
+ * statistic Inf (never at rest: the navigator never aligned, without a
+ * word) and 1e20 dropped the accelerometer's term (at rest in any
+ * motion). The bounds either side: float 1e-18 / 1e-23 and 1e18 / 1e20,
+ * double 1e-150 / 1e-170 and 1e150 / 1e160. */
+static void test_config_squares(void **state)
+{
+#if FNAV_USE_DOUBLE
+    const fnav_real_t vals[4] = { 1e-150, 1e-170, 1e150, 1e160 };
+#else
+    const fnav_real_t vals[4] = { 1e-18f, 1e-23f, 1e18f, 1e20f };
+#endif
+    static const size_t off[4] = {
+        offsetof(fnav_stance_config_t, sigma_a_mps2),
+        offsetof(fnav_stance_config_t, sigma_g_rps),
+        offsetof(fnav_stance_config_t, gyro_thresh_rps),
+        offsetof(fnav_stance_config_t, accel_thresh_mps2),
+    };
+    static fnav_stance_t st;
+    fnav_stance_config_t c;
+    size_t i, k;
+    (void)state;
+    for (i = 0; i < 4; i++) {
+        for (k = 0; k < 4; k++) {
+            fnav_real_t *v = (fnav_real_t *)(void *)((char *)&c + off[i]);
+            c = fnav_stance_config_default;
+            c.detector = i < 2 ? FNAV_DETECTOR_SHOE : FNAV_DETECTOR_THRESHOLD;
+            *v = vals[k];
+            if (fnav_stance_init(&st, &c) != (k % 2u == 0u ? FNAV_OK : FNAV_E_CONFIG)) {
+                fail_msg("field %zu = %g %s", i, (double)vals[k], k % 2u == 0u ? "refused" : "not refused");
+            }
+        }
+    }
+}
+
 /* W = 2 floor(window * rate / 2) + 1, at least 3: the same 25 ms at every rate. */
 static void test_window_from_rate(void **state)
 {
@@ -1864,6 +1902,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_config_squares),
         cmocka_unit_test(test_not_initialised),
         cmocka_unit_test(test_window_from_rate),
         cmocka_unit_test(test_rate_without_stamps),

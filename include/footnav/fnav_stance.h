@@ -278,7 +278,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const 
 /**
  * Initialise a detector.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad config
- *         (non-positive or non-finite weights, window, threshold; negative rate).
+ *         (non-positive or non-finite weights, window, threshold; negative rate;
+ *         a noise weight sigma_a_mps2, sigma_g_rps or a threshold
+ *         gyro_thresh_rps, accel_thresh_mps2 whose square is 0 or not
+ *         finite: in float32 below about 2.6e-23 or above 1.8e19).
  *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
  *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
  *         them): nothing written.
