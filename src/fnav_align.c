@@ -39,7 +39,14 @@ fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t
           cfg->short_still_s <= cfg->min_still_s) ||
         !(fnav_isfinite(cfg->gravity_mps2) && cfg->gravity_mps2 > FNAV_R(0.0)) ||
         !(fnav_isfinite(cfg->still_ratio) && cfg->still_ratio > FNAV_R(1.0)) ||
-        !(fnav_isfinite(cfg->gyro_bias_prior_sd_rps) && cfg->gyro_bias_prior_sd_rps >= FNAV_R(0.0))) {
+        !(fnav_isfinite(cfg->gyro_bias_prior_sd_rps) && cfg->gyro_bias_prior_sd_rps >= FNAV_R(0.0)) ||
+        /* a positive prior's square, the posterior's weight, positive and
+         * finite (float32: an sd above 1.8e19 made the bias Inf / Inf = NaN,
+         * one below about 2.6e-23 the plain mean; test_align
+         * test_prior_square) */
+        (cfg->gyro_bias_prior_sd_rps > FNAV_R(0.0) &&
+         !(fnav_isfinite(cfg->gyro_bias_prior_sd_rps * cfg->gyro_bias_prior_sd_rps) &&
+           cfg->gyro_bias_prior_sd_rps * cfg->gyro_bias_prior_sd_rps > FNAV_R(0.0)))) {
         return FNAV_E_CONFIG;
     }
     al->cfg = *cfg;

@@ -332,6 +332,49 @@ static void test_max_duration(void **state)
     }
 }
 
+/* A positive gyro-bias prior sd whose square is 0 or infinite in the
+ * working precision is refused, as the filter's sds are (fnav_ukf.h): its
+ * square is the posterior's weight. Accepted, 1e20 in float (square Inf)
+ * gave a gyro bias of Inf / Inf = NaN, and fnav_nav's start of the filter
+ * on it failed its assert (FNAV_ASSERT, an abort, from a configuration
+ * fnav_nav_init had accepted); 1e-25 (square 0) took the plain mean, the
+ * opposite of what a prior that small means (a bias of 0). 0 (no prior)
+ * stays allowed. Either side: float 1e-18 / 1e-23 and 1e18 / 1e20, double
+ * 1e-150 / 1e-170 and 1e150 / 1e160; the accepted ones give a finite
+ * bias. */
+static void test_prior_square(void **state)
+{
+#if FNAV_USE_DOUBLE
+    const fnav_real_t vals[4] = { 1e-150, 1e-170, 1e150, 1e160 };
+#else
+    const fnav_real_t vals[4] = { 1e-18f, 1e-23f, 1e18f, 1e20f };
+#endif
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    int k;
+    (void)state;
+    c.max_still_s = FNAV_R(2.0);
+    for (k = 0; k < 4; k++) {
+        long j;
+        fnav_status_t st = FNAV_AGAIN;
+        c.gyro_bias_prior_sd_rps = vals[k];
+        if (fnav_align_init(&al, &c) != (k % 2 == 0 ? FNAV_OK : FNAV_E_CONFIG)) {
+            fail_msg("prior sd %g %s", (double)vals[k], k % 2 == 0 ? "refused" : "not refused");
+        }
+        if (k % 2 != 0) {
+            continue;
+        }
+        for (j = 0; j < 1000 && st == FNAV_AGAIN; j++) {
+            fnav_sample_t s = still_sample(j, 200.0, 0.002);
+            st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
+        }
+        assert_int_equal(st, FNAV_OK);
+        assert_true(fnav_vec3_isfinite(al.result.gyro_bias_rps) && fnav_vec3_isfinite(al.result.gyro_bias_sd_rps));
+    }
+    c.gyro_bias_prior_sd_rps = FNAV_R(0.0); /* no prior */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+}
+
 /* The detector statistic rising a decade above its running geometric
  * mean ends the still period even while the zero-velocity test passes. */
 static void test_ratio_ends_period(void **state)
@@ -884,6 +927,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_prior_square),
         cmocka_unit_test(test_not_initialised),
         cmocka_unit_test(test_from_means),
         cmocka_unit_test(test_from_means_bad_args),

@@ -466,6 +466,14 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     c.zaru_after_s = (fnav_real_t)INFINITY;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the alignment's gyro-bias prior: one whose square overflows was
+     * accepted, made the bias NaN and the start of the filter on it failed
+     * its assert, an abort (test_align test_prior_square) */
+    c = fnav_nav_config_default;
+    c.align.gyro_bias_prior_sd_rps = SQ_HUGE_BAD;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.align.gyro_bias_prior_sd_rps = SQ_HUGE_OK;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     /* the checks of nav_init no suite made (make coverage): gravity not
      * finite; a motion noise not finite or negative; an initial sd of 0,
      * negative, or whose square is 0 or infinite in the working precision

@@ -134,7 +134,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fn
                                                       uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
- *          values, max < min, short > min, still_ratio <= 1, negative prior).
+ *          values, max < min, short > min, still_ratio <= 1, negative prior,
+ *          a positive prior whose square is 0 or not finite: in float32
+ *          below about 2.6e-23 or above 1.8e19).
  *  FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
  *  than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
  *  them): nothing written. */
