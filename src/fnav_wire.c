@@ -437,7 +437,13 @@ fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *
     const uint8_t *p;
     float a[3], g[3], temp;
     size_t i;
-    if (f == NULL || s == NULL || f->type != FNAV_WIRE_SAMPLE || f->len != FNAV_WIRE_SAMPLE_LEN) {
+    /* NULL is an invalid argument, as everywhere in the core (every parser
+     * said FNAV_E_FORMAT, and read a NULL payload; test_wire
+     * test_parse_null_args) */
+    if (f == NULL || s == NULL || f->payload == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (f->type != FNAV_WIRE_SAMPLE || f->len != FNAV_WIRE_SAMPLE_LEN) {
         return FNAV_E_FORMAT;
     }
     p = f->payload;
@@ -467,7 +473,10 @@ fnav_status_t fnav_wire_parse_nav(const fnav_wire_frame_t *f, fnav_wire_nav_t *n
 {
     const uint8_t *p;
     size_t i;
-    if (f == NULL || nav == NULL || f->type != FNAV_WIRE_NAV || f->len != FNAV_WIRE_NAV_LEN) {
+    if (f == NULL || nav == NULL || f->payload == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (f->type != FNAV_WIRE_NAV || f->len != FNAV_WIRE_NAV_LEN) {
         return FNAV_E_FORMAT;
     }
     p = f->payload;
@@ -486,7 +495,10 @@ fnav_status_t fnav_wire_parse_nav(const fnav_wire_frame_t *f, fnav_wire_nav_t *n
 fnav_status_t fnav_wire_parse_status(const fnav_wire_frame_t *f, fnav_wire_status_t *st)
 {
     const uint8_t *p;
-    if (f == NULL || st == NULL || f->type != FNAV_WIRE_STATUS || f->len != FNAV_WIRE_STATUS_LEN) {
+    if (f == NULL || st == NULL || f->payload == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (f->type != FNAV_WIRE_STATUS || f->len != FNAV_WIRE_STATUS_LEN) {
         return FNAV_E_FORMAT;
     }
     p = f->payload;
@@ -502,7 +514,10 @@ fnav_status_t fnav_wire_parse_info(const fnav_wire_frame_t *f, fnav_wire_info_t 
 {
     const uint8_t *p;
     double rate;
-    if (f == NULL || info == NULL || f->type != FNAV_WIRE_INFO || f->len != FNAV_WIRE_INFO_LEN) {
+    if (f == NULL || info == NULL || f->payload == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (f->type != FNAV_WIRE_INFO || f->len != FNAV_WIRE_INFO_LEN) {
         return FNAV_E_FORMAT;
     }
     p = f->payload;
@@ -519,7 +534,10 @@ fnav_status_t fnav_wire_parse_info(const fnav_wire_frame_t *f, fnav_wire_info_t 
 
 fnav_status_t fnav_wire_parse_end(const fnav_wire_frame_t *f, uint32_t *count)
 {
-    if (f == NULL || count == NULL || f->type != FNAV_WIRE_END || f->len != FNAV_WIRE_END_LEN) {
+    if (f == NULL || count == NULL || f->payload == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (f->type != FNAV_WIRE_END || f->len != FNAV_WIRE_END_LEN) {
         return FNAV_E_FORMAT;
     }
     *count = get_u32(f->payload);

@@ -559,6 +559,59 @@ static void test_parse_wrong_length(void **state)
     }
 }
 
+/* A NULL frame, output or payload is an invalid argument, FNAV_E_ARG, as
+ * for every other function of the core that returns a status (the
+ * decoder, the port helpers): the parsers said FNAV_E_FORMAT, which their
+ * comment gives for a frame of the wrong type or length, and a frame of the
+ * right type and length with a NULL payload was read through it. Nothing
+ * is written. */
+static void test_parse_null_args(void **state)
+{
+    static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN,
+                                      FNAV_WIRE_INFO_LEN, FNAV_WIRE_END_LEN };
+    static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO,
+                                       FNAV_WIRE_END };
+    fnav_wire_frame_t f;
+    fnav_sample_t s;
+    fnav_wire_nav_t nav;
+    fnav_wire_status_t st;
+    fnav_wire_info_t info;
+    uint32_t count = 77u;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_wire_parse_sample(NULL, &s), FNAV_E_ARG);
+    assert_int_equal(fnav_wire_parse_nav(NULL, &nav), FNAV_E_ARG);
+    assert_int_equal(fnav_wire_parse_status(NULL, &st), FNAV_E_ARG);
+    assert_int_equal(fnav_wire_parse_info(NULL, &info), FNAV_E_ARG);
+    assert_int_equal(fnav_wire_parse_end(NULL, &count), FNAV_E_ARG);
+    f.seq = 1u;
+    for (i = 0; i < 5; i++) {
+        fnav_status_t r[5];
+        static uint8_t pay[255];
+        f.type = k_type[i];
+        f.len = k_len[i];
+        f.payload = pay;
+        r[0] = i == 0 ? fnav_wire_parse_sample(&f, NULL) : FNAV_E_ARG;
+        r[1] = i == 1 ? fnav_wire_parse_nav(&f, NULL) : FNAV_E_ARG;
+        r[2] = i == 2 ? fnav_wire_parse_status(&f, NULL) : FNAV_E_ARG;
+        r[3] = i == 3 ? fnav_wire_parse_info(&f, NULL) : FNAV_E_ARG;
+        r[4] = i == 4 ? fnav_wire_parse_end(&f, NULL) : FNAV_E_ARG;
+        assert_int_equal(r[i], FNAV_E_ARG);
+        /* the right type and length, no payload */
+        f.payload = NULL;
+        memset(&nav, 0x5A, sizeof nav);
+        count = 77u;
+        r[0] = fnav_wire_parse_sample(&f, &s);
+        r[1] = fnav_wire_parse_nav(&f, &nav);
+        r[2] = fnav_wire_parse_status(&f, &st);
+        r[3] = fnav_wire_parse_info(&f, &info);
+        r[4] = fnav_wire_parse_end(&f, &count);
+        assert_int_equal(r[i], FNAV_E_ARG);
+        assert_int_equal(nav.seq, 0x5A5A5A5Au);
+        assert_int_equal(count, 77u);
+    }
+}
+
 /* The boundary of a drop (docs/wire-protocol.md, step 5): a forward jump
  * of k < 32768 frames is a gap of k lost frames, one of 32768 is a restart
  * ("a drop of 32768 frames or more in one gap is indistinguishable from a
@@ -990,6 +1043,7 @@ int main(void)
         cmocka_unit_test(test_seq_accounting),
         cmocka_unit_test(test_seq_gap_boundary),
         cmocka_unit_test(test_parse_wrong_length),
+        cmocka_unit_test(test_parse_null_args),
         cmocka_unit_test(test_known_type_wrong_length),
         cmocka_unit_test(test_wrong_length_extent),
         cmocka_unit_test(test_nested_candidate_counts_once),

@@ -222,22 +222,23 @@ FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode_flush(fnav_wire_decoder_t *d, fn
  *  FNAV_INPUT_MAX_ABS and times beyond FNAV_T_NS_MAX). @return FNAV_OK,
  *  FNAV_E_FORMAT (wrong type or length), FNAV_E_NANINF (a non-finite value:
  *  of the temperature only when the flags say it has one, since a sample
- *  without one carries NaN there; *s unchanged). */
+ *  without one carries NaN there; *s unchanged), FNAV_E_ARG (f, s or
+ *  f->payload NULL; as for every parser below, nothing written). */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *s);
 
-/** Navigation output of a NAV frame. @return FNAV_OK or FNAV_E_FORMAT. */
+/** Navigation output of a NAV frame. @return FNAV_OK, FNAV_E_FORMAT or FNAV_E_ARG. */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_nav(const fnav_wire_frame_t *f, fnav_wire_nav_t *nav);
 
-/** Counters of a STATUS frame. @return FNAV_OK or FNAV_E_FORMAT. */
+/** Counters of a STATUS frame. @return FNAV_OK, FNAV_E_FORMAT or FNAV_E_ARG. */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_status(const fnav_wire_frame_t *f, fnav_wire_status_t *st);
 
 /** Description of an INFO frame (text fields always NUL-terminated).
- *  @return FNAV_OK, FNAV_E_FORMAT, or FNAV_E_RANGE when the rate is not a
- *  number in [0, 1e6] Hz (0: unknown; the .bin header's range; *info
- *  unchanged). */
+ *  @return FNAV_OK, FNAV_E_FORMAT, FNAV_E_ARG, or FNAV_E_RANGE when the
+ *  rate is not a number in [0, 1e6] Hz (0: unknown; the .bin header's
+ *  range; *info unchanged). */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_info(const fnav_wire_frame_t *f, fnav_wire_info_t *info);
 
-/** Sample count of an END frame. @return FNAV_OK or FNAV_E_FORMAT. */
+/** Sample count of an END frame. @return FNAV_OK, FNAV_E_FORMAT or FNAV_E_ARG. */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_end(const fnav_wire_frame_t *f, uint32_t *count);
 
 #ifdef __cplusplus
