@@ -158,7 +158,7 @@ static inline FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, c
  *         (zero: no gravity direction, a sensor that outputs zeros; or
  *         zeros averaged with real samples; or not m/s^2); that period is
  *         discarded (its |f| in refused_f_mps2) and the next still sample
- *         starts a new one.
+ *         starts a new one; FNAV_E_ARG for a NULL alignment or sample.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *sample, int still,
                                                 fnav_real_t stat);

@@ -330,7 +330,7 @@ void fnav_imuerr_sensor(fnav_imuerr_t *e, fnav_real_t y[FNAV_IMUERR_NCH]);
  * thermal effect on, temp_c is set and FNAV_SAMPLE_HAS_TEMP raised.
  * Timing effects are not applied (see fnav_imuerr_tick).
  * @return FNAV_OK, FNAV_E_NANINF for a non-finite input (sample unchanged,
- *         model not advanced).
+ *         model not advanced), FNAV_E_ARG for a NULL model or sample.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_apply(fnav_imuerr_t *e, fnav_sample_t *s);
 

@@ -113,10 +113,12 @@ FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const cha
 #define FNAV_ASSERT(cond) ((void)0)
 #endif
 
-/** Read one sample through a port (FNAV_E_UNSUPPORTED without a source). */
+/** Read one sample through a port (FNAV_E_UNSUPPORTED without a source,
+ *  FNAV_E_ARG for a NULL port or sample). */
 FNAV_WARN_UNUSED fnav_status_t fnav_port_read(const fnav_port_t *port, fnav_sample_t *sample);
 
-/** Write one navigation frame through a port (FNAV_OK without a sink). */
+/** Write one navigation frame through a port (FNAV_OK without a sink,
+ *  FNAV_E_ARG for a NULL port or frame). */
 FNAV_WARN_UNUSED fnav_status_t fnav_port_write_nav(const fnav_port_t *port, const fnav_nav_frame_t *frame);
 
 /** Log one message through a port (does nothing without a log hook). */

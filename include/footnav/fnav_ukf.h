@@ -319,8 +319,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, f
  * @param gyro_rps    angular rate (body, bias not removed), rad/s
  * @param accel_mps2  specific force (body, bias not removed), m/s^2
  * @param dt_s        interval, s; 0 does nothing
- * @return FNAV_OK; FNAV_E_NANINF (input ignored); FNAV_E_TIME on dt < 0;
- *         FNAV_E_STATE before start; FNAV_E_DECOMP when the covariance had
+ * @return FNAV_OK; FNAV_E_ARG for a NULL filter; FNAV_E_NANINF (input
+ *         ignored); FNAV_E_TIME on dt < 0; FNAV_E_STATE before start; FNAV_E_DECOMP when the covariance had
  *         to be reset (step completed); FNAV_E_DIVERGED (step undone: the
  *         state as before it; the covariance too, but for a jitter or reset
  *         its factorisation needed before the step, which is kept and
@@ -336,8 +336,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_
  * lever term to first order), so the exact Kalman update is used: it is what
  * the unscented update reduces to for a linear measurement.
  * @param gyro_rps  raw angular rate of the sample (body), rad/s (used with the lever)
- * @return FNAV_OK; FNAV_E_STATE before start; FNAV_E_NANINF on a non-finite
- *         rate; FNAV_E_DECOMP when the innovation covariance is not positive
+ * @return FNAV_OK; FNAV_E_ARG for a NULL filter; FNAV_E_STATE before start;
+ *         FNAV_E_NANINF on a non-finite rate; FNAV_E_DECOMP when the innovation covariance is not positive
  *         (update skipped, counted in health.update_reject); FNAV_E_DIVERGED
  *         when the correction or the new covariance would not be finite
  *         (update undone, counted in health.diverged).
