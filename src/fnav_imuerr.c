@@ -478,8 +478,11 @@ static int on(const fnav_imuerr_t *e, fnav_effect_id_t id, int ch)
 static fnav_status_t validate(const fnav_imuerr_config_t *cfg)
 {
     int id, i, c;
-    if (!fnav_isfinite(cfg->rate_hz) || !(cfg->rate_hz > FNAV_R(0.0)) || cfg->oversample < 1u ||
-        cfg->oversample > 1024u) {
+    /* the period 1 / rate_hz finite too: a subnormal float rate made it
+     * Inf, the first step's time 0 * Inf NaN (test_imuerr
+     * test_config_validation) */
+    if (!fnav_isfinite(cfg->rate_hz) || !(cfg->rate_hz > FNAV_R(0.0)) ||
+        !fnav_isfinite(FNAV_R(1.0) / cfg->rate_hz) || cfg->oversample < 1u || cfg->oversample > 1024u) {
         return FNAV_E_CONFIG;
     }
     for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {

@@ -415,6 +415,37 @@ static void test_config_validation(void **state)
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
     c.oversample = 1024u;
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    /* a rate so small that its period 1 / rate_hz overflows (a subnormal
+     * float): was accepted with dt_s = Inf, and the first sensor step's
+     * time 0 * Inf made a ramp's or thermal drift's bias NaN, every output
+     * of fnav_imuerr_apply NaN with FNAV_OK; refused, *e untouched. The
+     * smallest rate with a finite period is accepted. */
+    {
+#if FNAV_USE_DOUBLE
+        const fnav_real_t bad = 1e-310, ok = 1e-300;
+#else
+        const fnav_real_t bad = 1e-40f, ok = 1e-38f;
+#endif
+        c = fnav_imuerr_config_default;
+        c.mask[FNAV_EFFECT_RAMP] = FNAV_CH_ALL;
+        c.rate_hz = bad;
+        memset(&e, 0x5A, sizeof e);
+        assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+        assert_int_equal(((unsigned char *)&e)[0], 0x5A);
+        c.rate_hz = ok;
+        assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+        assert_true(fnav_isfinite(e.dt_s));
+        {
+            fnav_sample_t s;
+            int i;
+            memset(&s, 0, sizeof s);
+            s.accel_mps2[2] = -FNAV_G0_MPS2;
+            assert_int_equal(fnav_imuerr_apply(&e, &s), FNAV_OK);
+            for (i = 0; i < 3; i++) {
+                assert_true(fnav_isfinite(s.accel_mps2[i]) && fnav_isfinite(s.gyro_rps[i]));
+            }
+        }
+    }
 
     c = fnav_imuerr_config_default;
     c.mask[FNAV_EFFECT_JUMPS] = FNAV_CH_AX;

@@ -287,7 +287,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_init_tagged(fnav_imuerr_t *e, const f
  * Validate a configuration and initialise the model: seed every stream,
  * draw the stationary initial AR(1) and flicker states.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG when an enabled
- *         effect has a parameter outside its range (object untouched).
+ *         effect has a parameter outside its range, or rate_hz is not
+ *         positive and finite with a finite period 1 / rate_hz, or
+ *         oversample is outside 1 .. 1024 (object untouched).
  *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
  *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
  *         them): nothing written.
