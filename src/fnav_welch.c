@@ -38,7 +38,14 @@ fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t 
         c->overlap >= c->nfft || (unsigned)c->window > (unsigned)FNAV_WINDOW_RECT ||
         (unsigned)c->detrend > (unsigned)FNAV_DETREND_GLOBAL ||
         (c->detrend == FNAV_DETREND_GLOBAL && c->symmetric) || (unsigned)c->scaling > (unsigned)FNAV_SCALING_SPECTRUM ||
-        !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !(fnav_fabs(c->offset) <= (fnav_real_t)FNAV_INPUT_MAX_ABS)) {
+        !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !(fnav_fabs(c->offset) <= (fnav_real_t)FNAV_INPUT_MAX_ABS) ||
+        /* the density scale 1 / (f_s sum w^2) finite and positive: sum w^2
+         * is at least nfft / 4 for every window (3 / 8 for Hann), so
+         * f_s nfft and 4 / (f_s nfft) finite suffice (a float rate of
+         * 1e-40 Hz gave every density Inf, one of 3e38 Hz every one 0;
+         * test_welch test_config_and_bad_input) */
+        !fnav_isfinite(c->rate_hz * (fnav_real_t)c->nfft) ||
+        !fnav_isfinite(FNAV_R(4.0) / (c->rate_hz * (fnav_real_t)c->nfft))) {
         return FNAV_E_CONFIG;
     }
     /* through a copy: cfg may be w's own (a reset, fnav_welch_init(&w,

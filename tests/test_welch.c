@@ -850,6 +850,41 @@ static void test_config_and_bad_input(void **state)
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
     c.rate_hz = (fnav_real_t)NAN;
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    /* a rate whose density scale 1 / (f_s sum w^2) overflows or f_s nfft
+     * does: accepted, 1e-40 Hz in float gave every density Inf and 3e38 Hz
+     * every one 0, with FNAV_OK; refused, *w unchanged. Inside those
+     * limits (float 1e-30 and 1e36 Hz with nfft 64) the densities of
+     * these samples are finite and positive. */
+    {
+#if FNAV_USE_DOUBLE
+        const fnav_real_t bad[2] = { 1e-310, 1e307 }, ok[2] = { 1e-300, 1e300 };
+#else
+        const fnav_real_t bad[2] = { 1e-40f, 3e38f }, ok[2] = { 1e-30f, 1e36f };
+#endif
+        static fnav_real_t out[FNAV_WELCH_MAX_BINS];
+        int k;
+        uint32_t b;
+        assert_int_equal(fnav_welch_init(&w, NULL), FNAV_OK);
+        copy = w;
+        for (k = 0; k < 2; k++) {
+            c = fnav_welch_config_default;
+            c.rate_hz = bad[k];
+            assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+            assert_memory_equal(&w, &copy, sizeof w);
+        }
+        for (k = 0; k < 2; k++) {
+            c = fnav_welch_config_default;
+            c.rate_hz = ok[k];
+            assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+            for (i = 0; i < 64; i++) {
+                assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(i % 7)), FNAV_OK);
+            }
+            assert_int_equal(fnav_welch_get(&w, out, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            for (b = 1; b < fnav_welch_bins(&w); b++) {
+                assert_true(fnav_isfinite(out[b]) && out[b] > FNAV_R(0.0));
+            }
+        }
+    }
 }
 
 /* The offset is removed before anything else: with no detrending, a

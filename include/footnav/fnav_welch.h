@@ -119,7 +119,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fna
  *             w's own (&w->cfg: a reset with the same settings)
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
  *         overlap >= nfft, unknown window/detrend/scaling, a rate not
- *         positive and finite, an offset not finite or beyond
+ *         positive and finite or one whose density scale
+ *         1 / (rate_hz sum w^2) or rate_hz nfft is not finite (float32
+ *         at nfft 64: below about 2e-40 or above about 5e36 Hz), an offset not finite or beyond
  *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window;
  *         *w is then not changed (one initialised before keeps its
  *         configuration and data; one never initialised stays zeroed).
