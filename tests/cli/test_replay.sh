@@ -57,6 +57,14 @@ expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexist
 expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
 expect_err "rejected" "rejected configuration explained"
+# a value whose square the core cannot hold in float: refused at the start
+# (a gyro-bias prior sd of 1e22 deg/s passed, its posterior was NaN and the
+# navigator aborted on its assert at the first alignment; a SHOE weight of
+# 1e-25 m/s^2 passed and no rest was ever seen)
+expect_exit 2 "--param gyro_bias_prior_dps=1e22 refused, not an abort" "$H" replay vectors/walk.bin --quiet \
+    --param gyro_bias_prior_dps=1e22
+expect_err "rejected by the core" "a gyro-bias prior whose square overflows: refused"
+expect_exit 2 "--param sigma_a=1e-25 refused" "$H" replay vectors/walk.bin --quiet --param sigma_a=1e-25
 # a value refused for another key's: both keys named with the rule ("--param
 # align_max_s=2" was "rejected by the core" for the default realign_min_s 3)
 expect_exit 2 "align_max_s below realign_min_s" "$H" replay vectors/walk.bin --quiet --param align_max_s=2
