@@ -1653,7 +1653,7 @@ static int flat_span(const run_t *R, const chan_t *ch, double *lo_s, double *hi_
     return im == 0u || !in_range(R, &ch->res[im - 1u]) || im + 1u >= ch->nres || !in_range(R, &ch->res[im + 1u]);
 }
 
-/* The channels whose flat span reaches past an octave, below the table:
+/* The channels whose flat span covers an octave or more, below the table:
  * their tau and sigma_bias at the span's ends */
 static void print_flat(const run_t *R)
 {
@@ -1667,7 +1667,7 @@ static void print_flat(const run_t *R)
         }
         if (n++ == 0) {
             printf("The paper's t_BS on a flat minimum: the ADEV stays within the minimum's %.1f %% interval over "
-                   "more than an\noctave of tau, where the noise puts the lowest point; the paper's tau and "
+                   "an octave or\nmore of tau, where the noise puts the lowest point; the paper's tau and "
                    "sigma_bias (eqs. 5-6) move\nwith t_BS across it, BS does not (docs/allan.md):\n",
                    100.0 * R->conf);
         }

@@ -265,7 +265,7 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_uk
  *         lever, settle or closed_form other than 0 or 1; a
  *         standard deviation, measurement or bias sigma, lever or settling
  *         sd, whose square is 0 or not finite: in float32 below about
- *         1e-19 or above 1.8e19).
+ *         2.6e-23 or above 1.8e19).
  *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
  *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
  *         them): nothing written.

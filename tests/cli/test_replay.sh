@@ -60,11 +60,13 @@ expect_err "rejected" "rejected configuration explained"
 # a value whose square the core cannot hold in float: refused at the start
 # (a gyro-bias prior sd of 1e22 deg/s passed, its posterior was NaN and the
 # navigator aborted on its assert at the first alignment; a SHOE weight of
-# 1e-25 m/s^2 passed and no rest was ever seen)
+# 1e-25 m/s^2 passed and no rest was ever seen; float build: in double both
+# squares are finite)
 expect_exit 2 "--param gyro_bias_prior_dps=1e22 refused, not an abort" "$H" replay vectors/walk.bin --quiet \
     --param gyro_bias_prior_dps=1e22
 expect_err "rejected by the core" "a gyro-bias prior whose square overflows: refused"
 expect_exit 2 "--param sigma_a=1e-25 refused" "$H" replay vectors/walk.bin --quiet --param sigma_a=1e-25
+expect_err "rejected by the core" "a SHOE weight whose square is 0: refused"
 # a value refused for another key's: both keys named with the rule ("--param
 # align_max_s=2" was "rejected by the core" for the default realign_min_s 3)
 expect_exit 2 "align_max_s below realign_min_s" "$H" replay vectors/walk.bin --quiet --param align_max_s=2
