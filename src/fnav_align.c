@@ -156,7 +156,10 @@ static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_peri
             r->gyro_bias_sd_rps.v[i] = al->cfg.gyro_bias_prior_sd_rps;
         } else if (s02 > FNAV_R(0.0)) {
             r->gyro_bias_rps.v[i] = r->gyro_mean_rps.v[i] * s02 / (s02 + se2);
-            r->gyro_bias_sd_rps.v[i] = fnav_sqrt(s02 * se2 / (s02 + se2));
+            /* through the weight s0^2 / (s0^2 + se^2), in [0, 1]: the
+             * product s0^2 se^2 underflowed to a posterior sd of 0 for a
+             * prior sd of 1e-20 in float (test_align test_prior_square) */
+            r->gyro_bias_sd_rps.v[i] = fnav_sqrt(se2 * (s02 / (s02 + se2)));
         } else {
             r->gyro_bias_sd_rps.v[i] = r->gyro_mean_se_rps.v[i];
         }

@@ -347,7 +347,7 @@ static void test_prior_square(void **state)
 #if FNAV_USE_DOUBLE
     const fnav_real_t vals[4] = { 1e-150, 1e-170, 1e150, 1e160 };
 #else
-    const fnav_real_t vals[4] = { 1e-18f, 1e-23f, 1e18f, 1e20f };
+    const fnav_real_t vals[4] = { 1e-20f, 1e-23f, 1e18f, 1e20f };
 #endif
     fnav_align_t al;
     fnav_align_config_t c = fnav_align_config_default;
@@ -370,6 +370,22 @@ static void test_prior_square(void **state)
         }
         assert_int_equal(st, FNAV_OK);
         assert_true(fnav_vec3_isfinite(al.result.gyro_bias_rps) && fnav_vec3_isfinite(al.result.gyro_bias_sd_rps));
+        {
+            /* an accepted prior has a posterior: sd positive where the
+             * mean's is (an axis without noise has se 0, and so an exact
+             * mean), at most the prior's and the mean's (1e-20 in float:
+             * s0^2 se^2 underflowed to a posterior sd of 0) */
+            int i;
+            for (i = 0; i < 3; i++) {
+                const fnav_real_t sd = al.result.gyro_bias_sd_rps.v[i];
+                const fnav_real_t se = al.result.gyro_mean_se_rps.v[i];
+                if (!((se > FNAV_R(0.0) ? sd > FNAV_R(0.0) : sd == FNAV_R(0.0)) && sd <= vals[k] * FNAV_R(1.000001) &&
+                      sd <= al.result.gyro_mean_se_rps.v[i] * FNAV_R(1.000001))) {
+                    fail_msg("prior sd %g: posterior sd %g (mean se %g)", (double)vals[k], (double)sd,
+                             (double)al.result.gyro_mean_se_rps.v[i]);
+                }
+            }
+        }
     }
     c.gyro_bias_prior_sd_rps = FNAV_R(0.0); /* no prior */
     assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);

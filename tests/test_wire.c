@@ -599,16 +599,34 @@ static void test_parse_null_args(void **state)
         assert_int_equal(r[i], FNAV_E_ARG);
         /* the right type and length, no payload */
         f.payload = NULL;
-        memset(&nav, 0x5A, sizeof nav);
-        count = 77u;
-        r[0] = fnav_wire_parse_sample(&f, &s);
-        r[1] = fnav_wire_parse_nav(&f, &nav);
-        r[2] = fnav_wire_parse_status(&f, &st);
-        r[3] = fnav_wire_parse_info(&f, &info);
-        r[4] = fnav_wire_parse_end(&f, &count);
-        assert_int_equal(r[i], FNAV_E_ARG);
-        assert_int_equal(nav.seq, 0x5A5A5A5Au);
-        assert_int_equal(count, 77u);
+        {
+            /* nothing written: each output poisoned, and compared byte for
+             * byte with a copy poisoned alike */
+            fnav_sample_t s0;
+            fnav_wire_nav_t nav0;
+            fnav_wire_status_t st0;
+            fnav_wire_info_t info0;
+            memset(&s, 0x5A, sizeof s);
+            memset(&nav, 0x5A, sizeof nav);
+            memset(&st, 0x5A, sizeof st);
+            memset(&info, 0x5A, sizeof info);
+            s0 = s;
+            nav0 = nav;
+            st0 = st;
+            info0 = info;
+            count = 77u;
+            r[0] = fnav_wire_parse_sample(&f, &s);
+            r[1] = fnav_wire_parse_nav(&f, &nav);
+            r[2] = fnav_wire_parse_status(&f, &st);
+            r[3] = fnav_wire_parse_info(&f, &info);
+            r[4] = fnav_wire_parse_end(&f, &count);
+            assert_int_equal(r[i], FNAV_E_ARG);
+            assert_memory_equal(&s, &s0, sizeof s);
+            assert_memory_equal(&nav, &nav0, sizeof nav);
+            assert_memory_equal(&st, &st0, sizeof st);
+            assert_memory_equal(&info, &info0, sizeof info);
+            assert_int_equal(count, 77u);
+        }
     }
 }
 

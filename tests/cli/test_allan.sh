@@ -1100,8 +1100,9 @@ PYEOF
     then pass "10 s of ADIS: no fit without its white noise in the profile"; else fail "10 s of ADIS: white noise lost"; fi
     # the paper's t_BS on a flat minimum: JSON t_bs_flat_s is the span of tau about the lowest point in range
     # (tau <= tau_max_s) whose OADEV stays at or under the minimum's upper bound, recomputed here from --out's
-    # table; t_BS lies in it (to float's 1e-6: 983.0401 on a grid point of 983.04 s), and so does the t_BS of the same log without its first 5 s (gy's moves from 193
-    # to 79 s), which the text names for the channels whose span passes an octave
+    # table; t_BS lies in it (to float's 1e-6: 983.0401 on a grid point of 983.04 s), and so does the t_BS of
+    # the same log without its first 5 s (gy's moves from 193 to 79 s), which the text names for the
+    # channels whose span covers an octave or more
     if "$PY" - "$T/a.json" "$T/a.csv" <<'PYEOF'
 import json, sys
 j = json.load(open(sys.argv[1]))
@@ -1133,6 +1134,10 @@ PYEOF
     expect_exit 0 "ADIS log 1 without its first 5 s" "$H" allan "$T/acut.csv" --no-sim --json "$T/acut.json"
     expect_out "^Gyr y  deg/s  | t_BS 79 s, flat from 51.2 to 287 s: tau 5120 to 28672 samples, sigma_bias 0.000117 to 4.95e-05$" \
         "the paper's t_BS on a flat minimum: the span and its tau and sigma_bias named"
+    # gx's lowest point is the last tau in range (its span ends there, an octave long): no line for it
+    json "$T/acut.json" "abs(j['channels'][3]['paper']['t_bs_flat_s'][1] / j['channels'][3]['paper']['t_bs_s'] - 1) < 1e-6" &&
+        expect_err "gx: the Allan deviation has no minimum within" "gx: the lowest point at the range's end, warned" ||
+        fail "gx's lowest point not at its span's end: $(grep -o '"t_bs_flat_s":[^]]*]' "$T/acut.json" | sed -n 4p)"
     grep -q "^Gyr x  deg/s  | t_BS" "$T/out" && fail "a flat span named for gx, whose curve has no minimum in range" ||
         pass "no flat span named where the curve has no minimum in range (warned)"
     in_flat_span() { "$PY" -c 'import json, sys; a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
