@@ -32,7 +32,8 @@
 #define HX_PROFILE_TAU_MIN_S 1e-3
 #define HX_PROFILE_TAU_MAX_S 1e9
 /** Bias sds: the filter's sd_ok wants the square a positive float
- *  (src/fnav_ukf.c): from sqrt(FLT_MIN) = 2^-63 = 1.08e-19; at most the
+ *  (src/fnav_ukf.c, which takes a subnormal one, from about 2.6e-23); kept
+ *  to a normal square, from sqrt(FLT_MIN) = 2^-63 = 1.08e-19; at most the
  *  simulator's ar1 sigma (1e3). */
 #define HX_PROFILE_SIGMA_MIN 1.0842021724855044e-19
 #define HX_PROFILE_SIGMA_MAX 1e3

@@ -40,7 +40,7 @@ static int finite_pos(fnav_real_t x)
 }
 
 /* A standard deviation whose variance is finite and positive as well (in
- * float32 an sd below about 1e-19 has a variance of 0, one above 1.8e19 an
+ * float32 an sd below about 2.6e-23 has a variance of 0, one above 1.8e19 an
  * infinite one, which the guard would make the maximum). */
 static int sd_ok(fnav_real_t x)
 {
