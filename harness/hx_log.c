@@ -133,6 +133,13 @@ struct hx_reader {
     int temp_unflagged;         /* a record's temperature under a header without the flag was said */
 };
 
+static int printable(char *s);
+
+/* The reader's messages quote the file's own text (a field, a header
+ * name, a path): each is made one line of printable text, a control
+ * character read as '?' as in a .bin header's text, so that a field
+ * '0<ESC>]0;...<BEL>' cannot send an escape sequence to the terminal
+ * (it did: tests/cli/test_bad_input.sh) nor a line break forge a line. */
 static void set_err(hx_reader_t *r, const char *fmt, ...)
 {
     va_list ap;
@@ -143,6 +150,7 @@ static void set_err(hx_reader_t *r, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    (void)printable(msg);
     if (r->err[0] == '\0') {
         memcpy(r->err, msg, sizeof r->err);
         return;
@@ -168,6 +176,7 @@ static void add_line(hx_reader_t *r, const char *prefix, const char *fmt, va_lis
     }
     used += (size_t)snprintf(r->warn + used, sizeof r->warn - used, "%s", prefix);
     vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
+    (void)printable(r->warn + used); /* this line alone: the '\n' between lines stays (set_err) */
 }
 
 /* m/s^2 per unit of an acceleration unit a header names (1 for m/s^2 or

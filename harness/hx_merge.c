@@ -24,12 +24,22 @@ static void say(char *buf, size_t size, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+/* a message, one line of printable text: it quotes the file's own text
+ * (a field, a header name), whose control characters are read as '?' as
+ * the single-file reader's (a field '0<ESC>]0;...<BEL>' sent an escape
+ * sequence to the terminal: tests/cli/test_merge.sh) */
 static void say(char *buf, size_t size, const char *fmt, ...)
 {
     va_list ap;
+    char *c;
     va_start(ap, fmt);
     vsnprintf(buf, size, fmt, ap);
     va_end(ap);
+    for (c = buf; *c != '\0'; c++) {
+        if ((unsigned char)*c < 0x20u || (unsigned char)*c == 0x7fu) {
+            *c = '?';
+        }
+    }
 }
 
 /* The axis of a bare axis name ("x", "X", "x-axis (g)", "x_axis [deg/s]",

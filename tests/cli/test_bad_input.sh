@@ -661,5 +661,18 @@ rm -f "$T/usage.json"
 expect_exit 2 "psd: a usage error" "$H" psd "$T/nosamples.csv" --nfft 7 --json "$T/usage.json"
 [ ! -e "$T/usage.json" ] && pass "psd: no JSON on a usage error" || fail "psd: a JSON written on a usage error"
 
+# a field holding an escape sequence (OSC: set the terminal's title) is
+# quoted in the reader's messages with its control characters read as '?'
+# (the .bin header's rule): it reached the terminal as it was
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0\033]0;PWNED\007,0,-9.8,0,0,0\n' > "$T/esc.csv"
+expect_exit 1 "info, a field holding an escape sequence" "$H" info "$T/esc.csv" --json "$T/esc.json"
+if LC_ALL=C grep -q "$(printf '\033')" "$T/err" "$T/out"; then fail "an escape character of the file reached the terminal"
+else pass "no escape character of the file in the messages"; fi
+expect_err "column 2 ('0?]0;PWNED?') is not a number" "the field quoted with its control characters as '?'"
+expect_out "^incomplete  .*column 2 ('0?]0;PWNED?') is not a number" "info's incomplete line: the same"
+expect_exit 1 "replay, the same field" "$H" replay "$T/esc.csv" --out "$T/esc_traj.csv" --quiet
+if LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then fail "replay: an escape character of the file reached the terminal"
+else pass "replay: no escape character of the file in the messages"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"

@@ -495,6 +495,17 @@ else
     fail "merge: 300 samples to 2.99 s: $(grep -c . "$T/o.csv") lines, last $(tail -n 1 "$T/o.csv")"
 fi
 
+# a field holding an escape sequence, past the first 600 bytes (which the
+# binary-data check reads): merge's own reader quotes it with its control
+# characters as '?', as the single-file reader does
+awk 'BEGIN { print "t,ax,ay,az"; for (k = 0; k < 200; k++) if (k == 100) printf "1.00,0\033]0;X\007,0,-9.8\n"; else printf "%.2f,0,0,-9.8\n", k / 100 }' > "$T/escacc.csv"
+awk 'BEGIN { print "t,gx,gy,gz"; for (k = 0; k < 200; k++) printf "%.2f,0,0,0\n", k / 100 }' > "$T/escgyr.csv"
+"$H" merge "$T/escacc.csv" "$T/escgyr.csv" "$T/escout.csv" > "$T/out" 2> "$T/err"
+if LC_ALL=C grep -q "$(printf '\033')" "$T/err" "$T/out"; then fail "merge: an escape character of the file reached the terminal"
+else pass "merge: no escape character of the file in the messages"; fi
+grep -q "is not a number: '0?\]0;X?'" "$T/err" && pass "merge: the field quoted with its control characters as '?'" ||
+    fail "merge: the field's quote: $(cat "$T/err")"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_merge.sh: $fails failure(s)"
     exit 1
