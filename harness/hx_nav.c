@@ -513,7 +513,7 @@ int hx_nav_resample_progress(const hx_log_t *in, double rate_hz, double max_gap_
         if (kind != HX_BURSTS_NONE) {
             free(keep);
             snprintf(err, err_size, "--rate: %s",
-                     hx_bursts_text(&bu, "resampling needs each sample's own time", "--rate HZ (resampling)", why,
+                     hx_bursts_text(&bu, "resampling needs each sample's own time", "Resampling (--rate HZ)", why,
                                     sizeof why));
             return -1;
         }

@@ -86,7 +86,7 @@ expect_err "the frequencies are read at 50 Hz, the rate the file states, which t
     "bin at a stated 50 Hz: psd's warning names the conversion"
 # ... and --rate's resampler refuses it with the same remedy
 expect_exit 1 "bin: --rate 100 refused" "$H" replay "$T/burst.bin" --quiet --rate 100 --out "$T/x.csv"
-expect_err "resampling needs each sample's own time: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv --input-rate 400 (docs/harness.md, \"--rate HZ (resampling)\")" \
+expect_err "resampling needs each sample's own time: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv --input-rate 400 (docs/harness.md, \"Resampling (--rate HZ)\")" \
     "bin: --rate's refusal names the conversion"
 
 # 4. a time-stamped importer (pyshoe: t_s, m/s^2, rad/s): --input-rate ignored, as for the .bin

@@ -1431,8 +1431,12 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 awk -F, 'NR == 1 { print; next } { printf "%.4f,%s,%s,%s,%s,%s,%s\n", (NR - 2) / 400, $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/bw_even.csv"
 expect_exit 1 "stamps in bursts, --rate 100" "$H" replay "$T/bw_burst.csv" --quiet --units time=us --rate 100 --out "$T/bw_b.csv"
-expect_err "replay: error: --rate: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; resampling needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"--rate HZ (resampling)\")" \
+expect_err "replay: error: --rate: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; resampling needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"Resampling (--rate HZ)\")" \
     "stamps in bursts, --rate: refused, the cause and --input-rate named"
+# the section the message names is there (renamed "Resampling (`--rate HZ`)" in the 2026-12-02 rewrite, the message left
+# pointing at "--rate HZ (resampling)", which no heading or label of docs/harness.md begins with)
+if grep -qF '**Resampling (`--rate HZ`)**' docs/harness.md; then pass "--rate's bursts refusal names a section of docs/harness.md"
+else fail "--rate's bursts refusal names a section of docs/harness.md: no **Resampling (\`--rate HZ\`)** label"; fi
 expect_exit 1 "samples sharing a stamp, --rate 50" "$H" replay "$T/bw_shared.csv" --quiet --units time=us --rate 50
 expect_err "the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz" \
     "samples sharing a stamp, --rate: refused (one sample of four was kept)"
