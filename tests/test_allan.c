@@ -1126,7 +1126,7 @@ static double *synthetic_signal(size_t n)
 }
 
 /* Largest relative error of the float build against the extended-precision
- * reference on 1.1e6 samples (docs/allan.md, "float32 error"): measured
+ * reference on 1.1e6 samples (docs/allan.md, "Precision (float32 error)"): measured
  * 7.0e-7 (overlapping) and 1.0e-6 (non-overlapping), asserted at 1e-5 (the
  * input itself is rounded to float: 9.8 carries 24 bits). */
 #if FNAV_USE_DOUBLE
@@ -2105,7 +2105,7 @@ static void test_sim_statistics(void **state)
 }
 
 /* The simulator's quantisation and rate-random-walk terms against the model
- * they simulate (docs/allan.md, "Fit"): AVAR = 3 Q^2 f_s^2 / m^2 and
+ * they simulate (docs/allan.md, "Corrected identification"): AVAR = 3 Q^2 f_s^2 / m^2 and
  * K^2 (2 m^2 + 1) / (6 m f_s), exact for the discrete processes (e_k =
  * (x_k - x_{k-1}) f_s with x_k ~ N(0, Q^2); a walk of step K / sqrt(f_s)).
  * Overlapping AVAR of 400,000 samples: measured +0.20 %, +0.40 %

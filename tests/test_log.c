@@ -428,7 +428,8 @@ static void test_bin_header_fields(void **state)
 }
 
 /* The END record's count against the records read (docs/log-format.md,
- * "record count disagrees with END: reported at the end"): the golden
+ * "Integrity and what a reader does": record count disagrees with END,
+ * reported at the end): the golden
  * END says 6; made 5 (its CRC made right), all six samples are delivered,
  * then the mismatch. A mutant ignoring the count passed every suite. */
 static void test_bin_end_count(void **state)
@@ -466,7 +467,7 @@ static void test_bin_end_count(void **state)
     }
 }
 
-/* Resynchronisation (docs/log-format.md, "corrupted record"): at the next
+/* Resynchronisation (docs/log-format.md, "Integrity and what a reader does": corrupted record): at the next
  * slot when that slot is valid, else byte by byte; the skipped bytes are
  * counted. A record damaged in place skips no byte; seven bytes inserted
  * skip those seven. A mutant always scanning byte by byte (48 bytes

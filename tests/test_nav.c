@@ -96,7 +96,7 @@ typedef struct {
 /* With the rate estimated (stance.rate_hz 0) the first frame waits for
  * the 33rd sample (32 intervals) or for its own latency, h + lag samples,
  * whichever is later, and that sample releases every frame then due: the
- * figures fnav_nav.h and docs/navigation.md ("Latency") give. A standing
+ * figures fnav_nav.h and docs/navigation.md ("Data flow and latency") give. A standing
  * sensor at exact rates; counted by push and pop. */
 static int first_release(double rate_hz, float min_zupt_cycle, int *released)
 {
@@ -820,7 +820,7 @@ static void test_run_port(void **state)
     assert_memory_equal(fa, fb, sizeof fa);
 }
 
-/* Misuse by an integrator (docs/robustness.md, "core entry points"): a
+/* Misuse by an integrator (docs/robustness.md, "Bad-input catalogue: core entry points"): a
  * navigator never initialised (static storage is zeroed), or whose init
  * failed, is refused with FNAV_E_STATE by every call that returns a status,
  * and finish / reset leave it alone: a push, pop or step on it must not

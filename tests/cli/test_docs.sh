@@ -193,5 +193,87 @@ PY
 then pass "every relative link, anchor and section reference of the docs resolves"
 else fail "broken links or section references:"; cat "$T/links"; fi
 
+# --- section references in the sources: a program message or a comment that
+# names a section of the docs, `docs/X.md, "Heading"` (a message's string
+# literals joined as the compiler joins them), names a heading or a bold
+# label of X.md that begins with that text, as the docs' own references
+# above (a numbered heading, "5. Too short", also without its number). The
+# bursts refusal of `--rate` named "--rate HZ (resampling)" for a week after
+# the section was renamed (tests/cli/test_replay.sh checks the message).
+if (cd "$ROOT" && /usr/bin/python3 - harness/*.[ch] src/*.c include/footnav/*.h port/*/*.[ch] tests/*.c) >"$T/srcrefs" 2>&1 <<'PY'
+import os, re, sys, glob
+
+def norm(s):
+    return re.sub(r'\s+', ' ', re.sub(r'[`"*]', '', s)).strip().rstrip('.:').lower()
+
+def prose(path):
+    fence = False
+    for line in open(path, encoding='utf-8'):
+        if line.startswith('```'):
+            fence = not fence
+            continue
+        if not fence:
+            yield line
+
+cache = {}
+def labels(path):  # heading and bold-label texts; a numbered heading ("5. Too short") also without its number
+    if path not in cache:
+        labs, text = [], []
+        for line in prose(path):
+            m = re.match(r'#{1,6}\s+(.*?)\s*#*\s*$', line)
+            if m:
+                labs.append(norm(m.group(1)))
+                labs.append(norm(re.sub(r'^\d+\.\s+', '', m.group(1))))
+            text.append(line)
+        for m in re.finditer(r'(?:^|\n)\s*(?:[*-]\s+)?\*\*(.+?)\*\*', ''.join(text), re.S):
+            labs.append(norm(m.group(1)))
+        cache[path] = labs
+    return cache[path]
+
+def texts(src):  # (kind, text): each comment, and each run of adjacent string literals joined
+    tok = re.compile(r'/\*.*?\*/|//[^\n]*|"(?:[^"\\\n]|\\.)*"|\'(?:[^\'\\\n]|\\.)*\'', re.S)
+    run, end = [], -1
+    for m in tok.finditer(src):
+        t = m.group(0)
+        if t[0] == '"':
+            if run and src[end:m.start()].strip() == '':
+                run.append(t[1:-1])
+            else:
+                if run:
+                    yield 'string', ''.join(run)
+                run = [t[1:-1]]
+            end = m.end()
+            continue
+        if run:
+            yield 'string', ''.join(run)
+            run = []
+        if t.startswith('/*'):
+            yield 'comment', re.sub(r'\n\s*\*?\s?', ' ', t[2:-2])
+        elif t.startswith('//'):
+            yield 'comment', t[2:]
+    if run:
+        yield 'string', ''.join(run)
+
+n = bad = 0
+for f in sys.argv[1:]:
+    for kind, t in texts(open(f, encoding='utf-8').read()):
+        if kind == 'string':
+            t = t.replace('\\n', ' ').replace('\\"', '"')
+        for m in re.finditer(r'docs/([\w.-]+\.md)[`)\]]*,? *\(?"([^"]{1,100})"', t):
+            name, h = m.group(1), m.group(2)
+            if '%' in h or re.fullmatch(r'[A-Z]+', h):
+                continue  # a format's placeholder: the section comes at run time (checked by the CLI tests)
+            n += 1
+            p = os.path.join('docs', name)
+            if not os.path.exists(p):
+                print('%s: docs/%s, "%s": no such file' % (f, name, h)); bad += 1
+            elif not any(x.startswith(norm(h)) for x in labels(p)):
+                print('%s: docs/%s, "%s": no such heading or bold label' % (f, name, h)); bad += 1
+print('%d section references in the sources, %d unresolved' % (n, bad))
+sys.exit(1 if bad or n < 50 else 0)
+PY
+then pass "every section of the docs that a source names exists: $(tail -1 "$T/srcrefs")"
+else fail "section references in the sources:"; cat "$T/srcrefs"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_docs.sh: $fails failure(s)"; exit 1; fi
 echo "test_docs.sh: all passed"
