@@ -2244,6 +2244,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             snprintf(traj->rate_src, sizeof traj->rate_src,
                      "from the time stamps of the first 4,096 samples: 1 / their median interval; the detector's "
                      "first intervals give %.4g Hz", r != NULL ? hx_reader_meta(r)->rate_start_hz : 0.0);
+        } else if (nav.stats.samples == 0u) {
+            /* no sample: the detector never ran, and has no fallback rate
+             * nor window to name (info's wording) */
+            traj->rate_none = 1;
+            snprintf(traj->rate_src, sizeof traj->rate_src, "no sample gives no rate");
         } else if (nav.stats.samples < 2u) {
             /* no interval to take the median of: the figure is the
              * detector's fallback, not the log's rate */
@@ -2980,7 +2985,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         }
         fputc('\n', f);
     }
-    if (t->rate_none) {
+    if (t->rate_none && st->samples == 0u) {
+        fprintf(f, "rate              none (%s)\n", t->rate_src);
+    } else if (t->rate_none) {
         fprintf(f, "rate              none (%s), detector window %d samples\n", t->rate_src, t->window);
     } else {
         fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz,

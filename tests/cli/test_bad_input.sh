@@ -65,6 +65,12 @@ expect_exit 1 "replay of a header without samples" "$H" replay "$T/head.csv" --q
 expect_err "head.csv: no samples (no frame before it: the outputs hold none)" "replay: no frame said for a log without samples"
 grep -q "frames before it were written" "$T/err" && fail "replay: 'frames before it were written' with none" \
     || pass "replay: no claim of frames written before the error"
+# its rate line: no sample is not "one sample", and the detector, never
+# run, has no fallback rate nor window (it read "one sample gives no rate;
+# the stance detector took its fallback of 0.0 Hz), detector window 0
+# samples"); info says the same (docs/harness.md, "info")
+expect_exit 1 "replay of a header without samples, the summary" "$H" replay "$T/head.csv" --out "$T/head_traj.csv"
+expect_out "^rate              none (no sample gives no rate)$" "replay: a log without samples has no rate, said as info says it"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv"
 expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
 expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
