@@ -612,7 +612,7 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
     if ((types[0] == -1 || (types[0] >= 0 && k_eff[types[0]].cls != SGV_MOTION)) &&
         o->duration_s * o->rate_hz > SGV_MAX_STATIC_SAMPLES) {
         snprintf(err, err_size,
-                 "--duration %g x --rate %g is %.3g samples per static case; at most %.0f (e.g. --duration %.0f at "
+                 "--duration %g x --rate %g is %.0f samples per static case; at most %.0f (e.g. --duration %.0f at "
                  "this rate)",
                  o->duration_s, o->rate_hz, o->duration_s * o->rate_hz, SGV_MAX_STATIC_SAMPLES,
                  floor(SGV_MAX_STATIC_SAMPLES / o->rate_hz));

@@ -25,6 +25,10 @@ expect_err "unknown effect 'xx'" "validate: unknown effect beside a known one na
 expect_exit 2 "validate: walk effect with --static-only" "$H" simgap-validate --effects scale --static-only
 expect_exit 2 "validate: --only beyond --cases" "$H" simgap-validate --only 5 --cases 2
 expect_err "only 5 must be below --cases 2" "validate: --only beyond --cases said"
+# a static case just over the 2e7 samples: its size said in full, not rounded to the bound it exceeds ('2e+07')
+expect_exit 2 "validate: static case of 20000200 samples" "$H" simgap-validate --duration 100001 --rate 200
+expect_err "duration 100001 x --rate 200 is 20000200 samples per static case; at most 20000000" \
+    "validate: static case's size said in full"
 
 # a static log of 2 s: the held-out part cannot give tight Allan intervals
 # over a decade of tau -> "too short", exit 1, and the JSON says why
