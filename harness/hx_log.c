@@ -133,8 +133,6 @@ struct hx_reader {
     int temp_unflagged;         /* a record's temperature under a header without the flag was said */
 };
 
-static int printable(char *s);
-
 /* The reader's messages quote the file's own text (a field, a header
  * name, a path): each is made one line of printable text, a control
  * character read as '?' as in a .bin header's text, so that a field
@@ -150,7 +148,7 @@ static void set_err(hx_reader_t *r, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    (void)printable(msg);
+    (void)hx_printable(msg);
     if (r->err[0] == '\0') {
         memcpy(r->err, msg, sizeof r->err);
         return;
@@ -176,7 +174,7 @@ static void add_line(hx_reader_t *r, const char *prefix, const char *fmt, va_lis
     }
     used += (size_t)snprintf(r->warn + used, sizeof r->warn - used, "%s", prefix);
     vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
-    (void)printable(r->warn + used); /* this line alone: the '\n' between lines stays (set_err) */
+    (void)hx_printable(r->warn + used); /* this line alone: the '\n' between lines stays (set_err) */
 }
 
 /* m/s^2 per unit of an acceleration unit a header names (1 for m/s^2 or
@@ -241,9 +239,7 @@ static void copy_str(char *dst, size_t size, const char *src)
     dst[n] = '\0';
 }
 
-/* Replaces the control characters of s (below 0x20, and DEL) with '?';
- * returns how many there were. */
-static int printable(char *s)
+int hx_printable(char *s)
 {
     int n = 0;
     for (; *s != '\0'; s++) {
@@ -2366,7 +2362,7 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
                  r->mt.stated_hz, r->mt.stated_line);
     }
     snprintf(m->sensor, sizeof m->sensor, "Xsens %s", r->mt.product[0] != '\0' ? r->mt.product : "(MT Manager)");
-    if (printable(m->sensor) > 0) { /* an escape in the ProductCode reached the terminal, as a .bin's text */
+    if (hx_printable(m->sensor) > 0) { /* an escape in the ProductCode reached the terminal, as a .bin's text */
         add_warn(r, "%s: the ProductCode holds control characters (read as '?')", r->path);
     }
     copy_str(m->axes, sizeof m->axes, "sensor axes");
@@ -3149,7 +3145,7 @@ static int setup_bin(hx_reader_t *r)
         /* text that reaches the reports, read as printable: a sensor name
          * "x<LF>samples 1" would forge a line of info's report, and an
          * escape sequence reach the terminal */
-        const int ctl = printable(r->meta.sensor) + printable(r->meta.source) + printable(r->meta.axes);
+        const int ctl = hx_printable(r->meta.sensor) + hx_printable(r->meta.source) + hx_printable(r->meta.axes);
         if (ctl > 0) {
             add_warn(r, "%s: the header's text holds %d control character%s (read as '?')", r->path, ctl,
                      ctl == 1 ? "" : "s");

@@ -422,6 +422,13 @@ char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul);
 #define HX_CR_ALONE_HINT                                                                                      \
     " (its lines end in a carriage return alone, the old Mac OS convention: convert them, e.g. tr '\\r' '\\n')"
 
+/** Replaces the control characters of s (below 0x20, and DEL) with '?'
+ *  in place; returns how many there were. The text of a file that a
+ *  message or a report shows (a .bin header's, a quoted field) goes
+ *  through it, so that it cannot reach the terminal as an escape
+ *  sequence or forge a line. Shared by the readers and merge. */
+int hx_printable(char *s);
+
 /** The warning for data rows whose field count is not the header's
  *  hdr_fields: more = 0, rows with fewer (enough for the columns read);
  *  more = 1, rows with data past the header's fields, of checked rows

@@ -31,15 +31,10 @@ static void say(char *buf, size_t size, const char *fmt, ...)
 static void say(char *buf, size_t size, const char *fmt, ...)
 {
     va_list ap;
-    char *c;
     va_start(ap, fmt);
     vsnprintf(buf, size, fmt, ap);
     va_end(ap);
-    for (c = buf; *c != '\0'; c++) {
-        if ((unsigned char)*c < 0x20u || (unsigned char)*c == 0x7fu) {
-            *c = '?';
-        }
-    }
+    (void)hx_printable(buf);
 }
 
 /* The axis of a bare axis name ("x", "X", "x-axis (g)", "x_axis [deg/s]",

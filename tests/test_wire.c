@@ -510,16 +510,18 @@ static void test_seq_accounting(void **state)
     assert_int_equal(d.stats.frames, 8);
 }
 
+/* The five frame types and their payload lengths, in one order (the
+ * parser tests below walk them) */
+static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN, FNAV_WIRE_INFO_LEN,
+                                  FNAV_WIRE_END_LEN };
+static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO, FNAV_WIRE_END };
+
 /* Each parser refuses a frame of its type with another length (the table's
  * lengths) or of another type, and leaves the output alone: the decoder
  * never delivers such a frame, but a caller may build one. A mutant
  * dropping the NAV parser's length check passed every suite. */
 static void test_parse_wrong_length(void **state)
 {
-    static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN,
-                                      FNAV_WIRE_INFO_LEN, FNAV_WIRE_END_LEN };
-    static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO,
-                                       FNAV_WIRE_END };
     static uint8_t pay[255];
     fnav_wire_frame_t f;
     fnav_sample_t s;
@@ -567,10 +569,6 @@ static void test_parse_wrong_length(void **state)
  * is written. */
 static void test_parse_null_args(void **state)
 {
-    static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN,
-                                      FNAV_WIRE_INFO_LEN, FNAV_WIRE_END_LEN };
-    static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO,
-                                       FNAV_WIRE_END };
     fnav_wire_frame_t f;
     fnav_sample_t s;
     fnav_wire_nav_t nav;
