@@ -882,8 +882,8 @@ static void test_paper_min_at_end(void **state)
  * point and over tau <= 800 the 800 one, each exactly (the neighbour
  * above is past tau_max: no parabola); with 0 the parabola in log-log
  * through 400, 800, 1600 refines it, below the grid minimum. And
- * FNAV_E_RANGE when 1 s is below the table (at 50 Hz, 50 samples) or
- * fewer than 2 points are usable. */
+ * FNAV_E_RANGE when 1 s is below the table (at 50 Hz, 50 samples), when
+ * tau_max is below every point, or fewer than 2 points are usable. */
 static void test_paper_tau_max(void **state)
 {
     static const double adev[5] = { 4.0, 2.0, 1.0, 0.5, 2.0 };
@@ -921,6 +921,8 @@ static void test_paper_tau_max(void **state)
         assert_true(id.bs < FNAV_R(0.5));
     }
     assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(50.0), 0u, &id), FNAV_E_RANGE);
+    /* tau_max below every point: no point to take the minimum of */
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 50u, &id), FNAV_E_RANGE);
     for (i = 1; i < 5; i++) {
         r[i].terms = 0u; /* no term: not usable */
     }

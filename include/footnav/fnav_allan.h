@@ -309,7 +309,8 @@ double fnav_allan_edf_pvar(int alpha, uint32_t m, uint32_t n_phase);
  *                 `harness allan` passes 10 % of the record, docs/allan.md)
  * @param id       output
  * @return FNAV_OK; FNAV_E_ARG on NULL / bad rate; FNAV_E_RANGE when 1 s is
- *         outside the tau range with data or fewer than 2 valid points.
+ *         outside the tau range with data, fewer than 2 valid points, or
+ *         tau_max below every valid point (no point to take the minimum of).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_identify_paper(const fnav_allan_result_t *r, size_t n, fnav_real_t rate_hz,
                                                          uint32_t tau_max, fnav_allan_paper_id_t *id);
