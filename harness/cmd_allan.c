@@ -2124,17 +2124,12 @@ static int write_plot(const run_t *R, const char *path)
     return hx_plot_close(&p, CMD);
 }
 
-/* A control character, which would break the profile's one-line name. */
-static int is_control(char c)
-{
-    return (unsigned char)c < 0x20u || c == 0x7f;
-}
-
-/* Whether a profile name is one line of printable text. */
+/* Whether a profile name is one line of printable text (no control
+ * character, hx_control_len: the profile reader refuses one). */
 static int name_printable(const char *s)
 {
     for (; *s != '\0'; s++) {
-        if (is_control(*s)) {
+        if (hx_control_len(s) > 0u) {
             return 0;
         }
     }
@@ -2151,8 +2146,9 @@ static void base_name(const char *path, char *out, size_t n)
         *dot = '\0';
     }
     for (c = out; *c != '\0'; c++) {
-        if (is_control(*c)) {
-            *c = '_'; /* the name is one line of the profile */
+        if (hx_control_len(c) > 0u) {
+            *c = '_'; /* the name is one line of the profile (a C1 one's two bytes: two '_') */
+            c[1] = (unsigned char)c[1] >= 0x80u ? '_' : c[1];
         }
     }
 }

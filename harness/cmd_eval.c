@@ -393,7 +393,9 @@ static const char *md_cell(const char *name, char *out, size_t size)
             out[o++] = '\\';
             out[o++] = '|';
         } else {
-            out[o++] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+            const size_t k = hx_control_len(name);
+            out[o++] = k > 0u ? '?' : (char)c;
+            name += k > 1u ? k - 1u : 0u; /* the loop steps past the last byte */
         }
     }
     out[o] = '\0';

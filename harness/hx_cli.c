@@ -1221,14 +1221,25 @@ const char *hx_gp_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
+size_t hx_control_len(const char *s)
+{
+    const unsigned char c = (unsigned char)s[0];
+    if (c < 0x20u || c == 0x7fu) {
+        return c == 0u ? 0u : 1u; /* the terminating NUL is not a character */
+    }
+    return c == 0xc2u && (unsigned char)s[1] >= 0x80u && (unsigned char)s[1] <= 0x9fu ? 2u : 0u;
+}
+
 const char *hx_line_str(char *buf, size_t size, const char *s)
 {
     size_t o = 0;
     if (size == 0) {
         return buf;
     }
-    for (; *s != '\0' && o + 1 < size; s++) {
-        buf[o++] = ((unsigned char)*s < 0x20u || *s == 0x7f) ? '?' : *s;
+    while (*s != '\0' && o + 1 < size) {
+        const size_t k = hx_control_len(s);
+        buf[o++] = k > 0u ? '?' : *s;
+        s += k > 0u ? k : 1u;
     }
     buf[o] = '\0';
     return buf;

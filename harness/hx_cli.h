@@ -320,8 +320,15 @@ void hx_json_num(struct cJSON *o, const char *k, double v);
  *  path, a file name, a unit) goes through it, so that it stays text. */
 const char *hx_gp_str(char *buf, size_t size, const char *s);
 
-/** `s` as one line of text, each control character (a line break, a tab)
- *  a '?', cut to fit `buf`; returns buf. For a path in a comment line of a
+/** The length in bytes of the control character s starts with, 0 when it
+ *  starts with none: 1 for an ASCII one (below 0x20, and DEL), 2 for a C1
+ *  one in UTF-8 (U+0080-U+009F, C2 80-9F: U+009B is a terminal's CSI, as
+ *  ESC [ is). The one rule by which the text of a file or of a sender is
+ *  made safe to print (hx_printable, hx_line_str, a profile's keys). */
+size_t hx_control_len(const char *s);
+
+/** `s` as one line of text, each control character (a line break, a tab;
+ *  hx_control_len) a '?', cut to fit `buf`; returns buf. For a path in a comment line of a
  *  CSV (`# harness psd: PATH; ...`), which a line break split in two. */
 const char *hx_line_str(char *buf, size_t size, const char *s);
 

@@ -1,6 +1,7 @@
 /* Harness log I/O: .bin, CSV interchange and importers (see hx_log.h and
  * docs/log-format.md). */
 #include "hx_log.h"
+#include "hx_cli.h"
 #include "hx_bin.h"
 #include "hx_merge.h"
 #include "hx_names.h"
@@ -242,12 +243,18 @@ static void copy_str(char *dst, size_t size, const char *src)
 int hx_printable(char *s)
 {
     int n = 0;
-    for (; *s != '\0'; s++) {
-        if ((unsigned char)*s < 0x20u || (unsigned char)*s == 0x7fu) {
-            *s = '?';
+    char *o = s;
+    while (*s != '\0') {
+        const size_t k = hx_control_len(s);
+        if (k > 0u) {
+            *o++ = '?'; /* one '?' for the character, of one byte or two */
+            s += k;
             n++;
+        } else {
+            *o++ = *s++;
         }
     }
+    *o = '\0';
     return n;
 }
 

@@ -422,8 +422,9 @@ char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul);
 #define HX_CR_ALONE_HINT                                                                                      \
     " (its lines end in a carriage return alone, the old Mac OS convention: convert them, e.g. tr '\\r' '\\n')"
 
-/** Replaces the control characters of s (below 0x20, and DEL) with '?'
- *  in place; returns how many there were. The text of a file that a
+/** Replaces the control characters of s (hx_control_len: ASCII's, and
+ *  C1's in UTF-8) with '?' in place, one '?' for each (the text may get
+ *  shorter); returns how many there were. The text of a file that a
  *  message or a report shows (a .bin header's, a quoted field) goes
  *  through it, so that it cannot reach the terminal as an escape
  *  sequence or forge a line. Shared by the readers and merge. */

@@ -116,34 +116,20 @@ static int key_suggest(const char *u)
 }
 
 /* text as it may be quoted in a message: at most n-1 bytes, a control
- * character as '?' (a key is the file's text, printed to a terminal): an
- * ASCII one, and a C1 one in UTF-8 (C2 80-9F, as name_control() below:
- * U+009B is a terminal's CSI) */
+ * character (hx_control_len: ASCII's, and C1's in UTF-8) as '?' (a key
+ * is the file's text, printed to a terminal) */
 static void quote_text(char *dst, size_t n, const char *text)
 {
-    size_t i, o = 0;
-    for (i = 0; o + 1u < n && text[i] != '\0'; i++) {
-        const unsigned char c = (unsigned char)text[i];
-        if (c == 0xc2u && (unsigned char)text[i + 1] >= 0x80u && (unsigned char)text[i + 1] <= 0x9fu) {
-            i++; /* the two bytes of one character, one '?' */
-            dst[o++] = '?';
-        } else {
-            dst[o++] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
-        }
-    }
-    dst[o] = '\0';
+    (void)hx_line_str(dst, n, text);
 }
 
-/* Index of the first control character of a name, or -1: ASCII's and
- * C1's in UTF-8 (U+0080-U+009F, C2 80-9F: U+009B is a terminal's CSI);
- * a name goes to stdout (sim's effect lines, replay's summary) */
+/* Index of the first control character of a name (hx_control_len), or
+ * -1; a name goes to stdout (sim's effect lines, replay's summary) */
 static long name_control(const char *s)
 {
     long i;
     for (i = 0; s[i] != '\0'; i++) {
-        const unsigned char c = (unsigned char)s[i];
-        if (c < 0x20u || c == 0x7fu || (c == 0xc2u && (unsigned char)s[i + 1] >= 0x80u &&
-                                        (unsigned char)s[i + 1] <= 0x9fu)) {
+        if (hx_control_len(s + i) > 0u) {
             return i;
         }
     }

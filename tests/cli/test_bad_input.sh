@@ -679,6 +679,13 @@ expect_out "^incomplete  .*column 2 ('0?]0;PWNED?') is not a number" "info's inc
 expect_exit 1 "replay, the same field" "$H" replay "$T/esc.csv" --out "$T/esc_traj.csv" --quiet
 if LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then fail "replay: an escape character of the file reached the terminal"
 else pass "replay: no escape character of the file in the messages"; fi
+# the same with a C1 control in UTF-8 (U+009B, C2 9B: a terminal's CSI, as
+# ESC [ is), one '?' for its two bytes; before, the ASCII rule let it through
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0\302\2332J,0,-9.8,0,0,0\n' > "$T/csi.csv"
+expect_exit 1 "info, a field holding a C1 control (U+009B)" "$H" info "$T/csi.csv"
+if LC_ALL=C grep -q "$(printf '\302\233')" "$T/err" "$T/out"; then fail "a C1 control of the file reached the terminal"
+else pass "no C1 control of the file in the messages"; fi
+expect_err "column 2 ('0?2J') is not a number" "the C1 control quoted as one '?'"
 
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
