@@ -59,6 +59,10 @@ static const hx_opt_t k_opts[] = {
     { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
     { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },
     { "--seed", "N", "random seed of the simulations (default 1)", 0 },
+    { "--refits", "N", "interval of the corrected fit: simulate the fitted model N times (N >= 2; default 0, "
+                       "off) at the record's length (or --sim-samples; also with --no-sim), refit each the same "
+                       "way, and print the central 68.3 % (fixed, not --conf) of sigma_v, tau and sigma_bias (a "
+                       "parametric bootstrap; channels whose AR(1) part is identified)", 0 },
     { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's "
                      "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
@@ -125,6 +129,10 @@ typedef struct {
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
     uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
     unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: 1 over --max-work, 2 interrupted (a signal) */
+    /* --refits: the parametric bootstrap of the corrected fit (refit_all()) */
+    int refitted;        /* 1: its refits ran to the end (0: not eligible, none asked, or interrupted) */
+    int rf_ok, rf_fit_failed, rf_unresolved; /* refits fitted with their AR(1) identified; fit failed; AR(1) not */
+    double rf_ci[3][2];  /* sigma_v, tau (samples), sigma_bias: 15.87 and 84.13 percentiles (NAN: < 2 ok) */
 } chan_t;
 
 typedef struct {
@@ -137,6 +145,8 @@ typedef struct {
     double rate_hz;
     uint32_t n;              /* samples pushed per channel */
     uint32_t nsim;           /* samples per Fig. 7 simulation (0: none run) */
+    long refits;             /* --refits: simulations of each channel's corrected fit (0: off) */
+    uint32_t nrefit;         /* samples per refit's simulation */
     double tau_max_frac;
     double conf;
     const char *source;
@@ -1489,6 +1499,141 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
     return ok == 1 ? 0 : ok < 0 ? ok : -1;
 }
 
+/* ------------------------------------------------------------ --refits */
+
+static int ar1_identified_in(const run_t *R, const fnav_allan_result_t *res, size_t nres, const hx_noise_model_t *f,
+                             int fit_ok, double tau_long_s, double tau_max);
+static double tau_long_of(const run_t *R, const chan_t *ch);
+static int ar1_resolved(const run_t *R, const chan_t *ch);
+
+/* The p-quantile (0 <= p <= 1) of v[0..n-1], sorted ascending, by linear
+ * interpolation between the order statistics at h = (n - 1) p (Hyndman and
+ * Fan's definition 7, numpy's and R's default): n >= 2. */
+static double quantile_sorted(const double *v, size_t n, double p)
+{
+    const double h = (double)(n - 1u) * p;
+    const size_t j = (size_t)floor(h);
+    return j + 1u < n ? v[j] + (h - (double)j) * (v[j + 1u] - v[j]) : v[n - 1u];
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The model simulated at R->nrefit samples through the estimator the
+ * measured table came from (the streaming one, or --estimator exact's
+ * record), into t's table (display units, t->scale 1).
+ * @return 0; -1 failed (the model refused, out of memory); -2 beyond the
+ * streaming estimator's input range; -3 interrupted */
+static int refit_table(run_t *R, chan_t *t, const hx_noise_model_t *mdl, unsigned long seed, hx_progress_t *pr,
+                       double *done, double total)
+{
+    hx_noise_sim_t s;
+    uint32_t k;
+    int rc = 0;
+    if (!R->exact) {
+        return simulate(R, t, mdl, R->nrefit, seed, t->res, pr, done, total);
+    }
+    if (hx_noise_sim_init(&s, mdl, R->rate_hz, seed) != 0) {
+        return -1;
+    }
+    t->nx = 0u;
+    for (k = 0; rc == 0 && k < R->nrefit; k++) {
+        if (record(t, hx_noise_sim_next(&s)) != 0) {
+            rc = -1;
+        }
+        if ((k & 65535u) == 0u) {
+            hx_progress_update(pr, (*done + (double)k) / total);
+            if (hx_stop_sig) {
+                rc = -3;
+            }
+        }
+    }
+    *done += (double)R->nrefit;
+    hx_noise_sim_free(&s);
+    if (rc == 0) {
+        exact_table(R, t);
+    }
+    return rc;
+}
+
+/* --refits: a parametric bootstrap of a channel's corrected fit. The
+ * fitted model is simulated R->refits times at R->nrefit samples (seed +
+ * 1,000,000 (i + 1) + k for refit k of the i-th channel, apart from the
+ * Fig. 7 check's seed + 1000 i and + 1), each through the same estimator,
+ * identified as the measured table was (the same options, tau up to
+ * --max-tau-frac of the simulated record) and its AR(1) part tested as
+ * the measured one's (ar1_identified_in()); a refit whose fit fails or
+ * whose AR(1) part is not identified is counted, not used. The interval
+ * is the 15.87 and 84.13 percentiles (the central 68.27 %, one sigma) of
+ * the refits that are used, none when fewer than 2.
+ * @return 0; -3 interrupted (the channel's refitted stays 0) */
+static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fit_extra, hx_progress_t *pr,
+                         double *done, double total)
+{
+    chan_t *t = (chan_t *)calloc(1, sizeof *t);
+    double *v = (double *)malloc(3u * (size_t)R->refits * sizeof *v);
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    long k;
+    int q, rc = 0;
+    ch->rf_ok = ch->rf_fit_failed = ch->rf_unresolved = 0;
+    for (q = 0; q < 3; q++) {
+        ch->rf_ci[q][0] = ch->rf_ci[q][1] = (double)NAN;
+    }
+    if (t == NULL || v == NULL) {
+        free(t);
+        free(v);
+        hx_error(CMD, "%s: %s: out of memory for the refits", R->source, ch->name);
+        return -1;
+    }
+    t->scale = 1.0; /* the model is in display units */
+    t->name = ch->name;
+    o.with_quant = fit_extra;
+    o.with_rrw = fit_extra;
+    o.tau_max_s = R->tau_max_frac * (double)R->nrefit / R->rate_hz;
+    for (k = 0; k < R->refits; k++) {
+        hx_allan_ident_t id;
+        const int st = refit_table(R, t, &ch->id.fit, seed + 1000000ul * (unsigned long)(i + 1) + (unsigned long)k,
+                                   pr, done, total);
+        if (st == -3 || hx_stop_sig) {
+            rc = -3;
+            break;
+        }
+        if (st != 0 || hx_allan_identify(t->res, t->nres, R->rate_hz, &o, &id) != 0 || !id.fit_ok) {
+            ch->rf_fit_failed++;
+        } else if (!ar1_identified_in(R, t->res, t->nres, &id.fit, 1, tau_long_of(R, t),
+                                      R->tau_max_frac * (double)R->nrefit)) {
+            ch->rf_unresolved++;
+        } else {
+            v[ch->rf_ok] = id.fit.white;
+            v[R->refits + ch->rf_ok] = id.fit.gm_tau_s * R->rate_hz;
+            v[2 * R->refits + ch->rf_ok] = id.fit.gm_sigma;
+            ch->rf_ok++;
+        }
+    }
+    if (rc == 0) {
+        ch->refitted = 1;
+        for (q = 0; q < 3 && ch->rf_ok >= 2; q++) {
+            double *w = v + (size_t)q * (size_t)R->refits;
+            qsort(w, (size_t)ch->rf_ok, sizeof *w, cmp_double);
+            ch->rf_ci[q][0] = quantile_sorted(w, (size_t)ch->rf_ok, 0.158655253931457);
+            ch->rf_ci[q][1] = quantile_sorted(w, (size_t)ch->rf_ok, 0.841344746068543);
+        }
+    }
+    free(t->x);
+    free(t);
+    free(v);
+    return rc;
+}
+
+/* Whether a channel's corrected fit is refitted: fitted, its AR(1) part identified */
+static int refit_eligible(const run_t *R, const chan_t *ch)
+{
+    return ch->id_ok && ch->id.fit_ok && !ch->constant && ar1_resolved(R, ch);
+}
+
 /* ------------------------------------------------------------ output */
 
 static const char *fmt_g(char *b, size_t n, double v)
@@ -1678,6 +1823,45 @@ static void print_flat(const run_t *R)
     }
 }
 
+/* --refits: the corrected fit's interval, under the parameter table (and
+ * the bound's lines), one line per channel */
+static void print_refits(const run_t *R)
+{
+    int i;
+    char b1[32], b2[32];
+    if (R->refits <= 0 || R->interrupted[0] != '\0') {
+        return; /* off, or cut short by a signal (said in the warning) */
+    }
+    printf("Corrected fit, 68 %% interval of %ld refits of the fitted model (parametric bootstrap: the 15.87 and "
+           "84.13\npercentiles of the fits of %lu-sample simulations of it; the spread the fitted model gives at "
+           "this length,\nnot a check of its form; docs/allan.md):\n",
+           R->refits, (unsigned long)R->nrefit);
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        const int failed = ch->rf_fit_failed + ch->rf_unresolved;
+        printf("%-6s %-6s | ", ch->label, ch->unit);
+        if (!ch->refitted) {
+            printf("n/a (no corrected fit with its AR(1) part identified: not refitted)\n");
+            continue;
+        }
+        if (ch->rf_ok >= 2) {
+            /* tau as the table's column: whole samples, %.3g past 1e9 (print_params()) */
+            snprintf(b1, sizeof b1, ch->rf_ci[1][0] < 1e9 ? "%.0f" : "%.3g", ch->rf_ci[1][0]);
+            snprintf(b2, sizeof b2, ch->rf_ci[1][1] < 1e9 ? "%.0f" : "%.3g", ch->rf_ci[1][1]);
+            printf("sigma_v %.3g to %.3g, tau %s to %s samples, sigma_bias %.3g to %.3g", ch->rf_ci[0][0],
+                   ch->rf_ci[0][1], b1, b2, ch->rf_ci[2][0], ch->rf_ci[2][1]);
+        } else {
+            printf("n/a (fewer than 2 refits usable)");
+        }
+        printf(" (%d of %ld refits", ch->rf_ok, R->refits);
+        if (failed > 0) {
+            printf("; %d failed: %d fit failed, %d AR(1) not identified", failed, ch->rf_fit_failed,
+                   ch->rf_unresolved);
+        }
+        printf(")\n");
+    }
+}
+
 static void print_params(const run_t *R)
 {
     int i, nbound = 0, nother = 0;
@@ -1761,6 +1945,7 @@ static void print_params(const run_t *R)
         }
         printf("\n");
     }
+    print_refits(R);
     print_flat(R);
     for (i = 0; i < R->nch; i++) {
         nother += R->ch[i].id_ok && R->ch[i].id.paper_ok;
@@ -1970,6 +2155,28 @@ static int write_json(const run_t *R, const char *path)
         /* false: no fit, or the curve does not resolve its AR(1) part; a
          * --profile then holds the bound from the Allan minimum */
         cJSON_AddBoolToObject(p, "ar1_identified", ch->id_ok && ar1_resolved(R, ch));
+        if (ch->refitted) {
+            /* --refits: the parametric bootstrap's counts and 68 % intervals
+             * (null: fewer than 2 refits usable) */
+            static const char *const keys[3] = { "sigma_v_ci68", "tau_samples_ci68", "sigma_bias_ci68" };
+            cJSON *rf = cJSON_AddObjectToObject(p, "refits");
+            int q;
+            hx_json_num(rf, "requested", (double)R->refits);
+            hx_json_num(rf, "samples", (double)R->nrefit);
+            hx_json_num(rf, "ok", (double)ch->rf_ok);
+            hx_json_num(rf, "failed", (double)(ch->rf_fit_failed + ch->rf_unresolved));
+            hx_json_num(rf, "fit_failed", (double)ch->rf_fit_failed);
+            hx_json_num(rf, "ar1_not_identified", (double)ch->rf_unresolved);
+            for (q = 0; q < 3; q++) {
+                if (ch->rf_ok >= 2) {
+                    cJSON *ci = cJSON_AddArrayToObject(p, keys[q]);
+                    cJSON_AddItemToArray(ci, cJSON_CreateNumber(ch->rf_ci[q][0]));
+                    cJSON_AddItemToArray(ci, cJSON_CreateNumber(ch->rf_ci[q][1]));
+                } else {
+                    cJSON_AddNullToObject(p, keys[q]);
+                }
+            }
+        }
         /* the model a --profile takes: the fit, or where its AR(1) is not
          * identified the bound from the Allan minimum (whose numbers the
          * corrected object above does not hold); empty when there is none */
@@ -2307,9 +2514,9 @@ static int part_resolved(const run_t *R, const fnav_allan_result_t *r, double al
  * sigma are whatever the optimiser stopped at: a 1-minute log gave
  * T = 8e-6 s, sigma = 1.3e-6 m/s^2, a bias the filter would then never
  * estimate). */
-static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
+static int ar1_identified_in(const run_t *R, const fnav_allan_result_t *res, size_t nres, const hx_noise_model_t *f,
+                             int fit_ok, double tau_long_s, double tau_max)
 {
-    const hx_noise_model_t *f = &ch->id.fit;
     hx_noise_model_t w = *f, nw = *f;
     const double bump_s = 1.89 * f->gm_tau_s;
     int ar1_seen = 0, white_seen = 0;
@@ -2318,16 +2525,16 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
      * not a bias (HX_ALLAN_AR1_MIN_BUMP_SAMPLES): 10 minutes of ADIS16405
      * log 1 fit gx with T = 1 sample and a white noise of 0.0279
      * deg/s/sqrt(Hz) for the log's 0.040 */
-    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s * R->rate_hz >= HX_ALLAN_AR1_MIN_BUMP_SAMPLES)) {
+    if (!fit_ok || !(bump_s <= tau_long_s) || !(bump_s * R->rate_hz >= HX_ALLAN_AR1_MIN_BUMP_SAMPLES)) {
         return 0;
     }
     w.gm_sigma = 0.0; /* the model without its AR(1) part */
     nw.white = 0.0;   /* the model without its white part */
-    for (j = 0; j < ch->nres; j++) {
-        const fnav_allan_result_t *r = &ch->res[j];
+    for (j = 0; j < nres; j++) {
+        const fnav_allan_result_t *r = &res[j];
         const double m = (double)r->tau;
         double all;
-        if (r->terms < 2u || m > tau_max_samples(R) * (1.0 + 1e-9)) {
+        if (r->terms < 2u || m > tau_max * (1.0 + 1e-9)) {
             continue;
         }
         all = hx_noise_model_avar(f, R->rate_hz, m);
@@ -2339,6 +2546,13 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
         white_seen |= part_resolved(R, r, all, &nw);
     }
     return ar1_seen && white_seen;
+}
+
+/* ar1_identified_in() of the channel's measured table and fit, over the
+ * tau the identification keeps to */
+static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
+{
+    return ar1_identified_in(R, ch->res, ch->nres, &ch->id.fit, ch->id.fit_ok, tau_long_s, tau_max_samples(R));
 }
 
 /* The channel's longest averaging time with data, s: it bounds what can be
@@ -2692,7 +2906,7 @@ int hx_cmd_allan(int argc, char **argv)
     hx_args_t a;
     run_t *R;
     int rc, i, exit_code = HX_EXIT_OK, input_rc, npaper = 0;
-    double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
+    double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0, refits_d = 0.0;
     long per_octave = 4, column = 0;
     const char *series, *path, *s_est;
     char name[FNAV_PROFILE_NAME_MAX];
@@ -2772,6 +2986,7 @@ int hx_cmd_allan(int argc, char **argv)
         hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
         hx_arg_whole(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
         hx_arg_whole(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
+        hx_arg_whole(&a, "--refits", 0.0, 999999.0, &refits_d) != 0 ||
         hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 ||
         hx_arg_double(&a, "--max-work", 1.0, 1e18, &R->max_work) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
         free(R);
@@ -2782,6 +2997,14 @@ int hx_cmd_allan(int argc, char **argv)
         free(R);
         return HX_EXIT_USAGE;
     }
+    if (refits_d == 1.0) {
+        /* one refit has no spread: refused, not printed as an interval of width 0 */
+        hx_error(CMD, "--refits must be 0 (off) or at least 2, not '%s' (the interval is the spread of the refits)",
+                 hx_arg(&a, "--refits"));
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    R->refits = (long)refits_d;
     if (series != NULL && hx_arg(&a, "--profile") != NULL) {
         hx_error(CMD, "--profile needs a six-channel log, not a --series");
         free(R);
@@ -3002,12 +3225,17 @@ int hx_cmd_allan(int argc, char **argv)
             /* said of the stages the run has (no deviation tables or no
              * simulation check named that was not asked for) */
             snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s in the deviation tables: those from "
-                                                            "there on not computed%s",
+                                                            "there on not computed%s%s",
                      hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT",
-                     hx_flag(&a, "--no-sim") ? "" : ", the simulation check not run");
+                     hx_flag(&a, "--no-sim") ? "" : ", the simulation check not run",
+                     R->refits > 0 ? ", the refits not run" : "");
         } else if (hx_stop_sig && !hx_flag(&a, "--no-sim")) {
-            snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s before the simulation check: not run "
-                                                            "(the tables and the identification are complete)",
+            snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s before the simulation check: not "
+                                                            "run%s (the tables and the identification are complete)",
+                     hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT", R->refits > 0 ? ", nor the refits" : "");
+        } else if (hx_stop_sig && R->refits > 0) {
+            snprintf(R->interrupted, sizeof R->interrupted, "interrupted by %s before the refits: not run (the "
+                                                            "tables and the identification are complete)",
                      hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
         }
     }
@@ -3046,9 +3274,9 @@ int hx_cmd_allan(int argc, char **argv)
             if (src == -3 || srf == -3 || hx_stop_sig) {
                 ch->have_sim_paper = ch->have_sim_fit = 0;
                 snprintf(R->interrupted, sizeof R->interrupted,
-                         "interrupted by %s in the simulation check: no simulated curve (the tables and the "
+                         "interrupted by %s in the simulation check: no simulated curve%s (the tables and the "
                          "identification are complete)",
-                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
+                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT", R->refits > 0 ? ", the refits not run" : "");
                 for (; i < R->nch; i++) {
                     R->ch[i].have_sim_paper = R->ch[i].have_sim_fit = 0;
                 }
@@ -3062,6 +3290,39 @@ int hx_cmd_allan(int argc, char **argv)
             }
         }
         if (!hx_stop_sig) {
+            hx_progress_end(&pr);
+        }
+    }
+    if (R->refits > 0 && !hx_stop_sig) {
+        /* --refits: the parametric bootstrap of each corrected fit whose
+         * AR(1) part is identified (refit_channel()), at --sim-samples or
+         * the record's length */
+        hx_progress_t pr;
+        double done = 0.0, total = 0.0;
+        R->nrefit = nsim_d > 0.0 ? (uint32_t)nsim_d : R->n;
+        for (i = 0; i < R->nch; i++) {
+            total += refit_eligible(R, &R->ch[i]) ? (double)R->refits * (double)R->nrefit : 0.0;
+        }
+        if (total > 0.0) {
+            hx_progress_start(&pr, "allan: refits (parametric bootstrap)", 1.0);
+        }
+        for (i = 0; i < R->nch && total > 0.0; i++) {
+            if (refit_eligible(R, &R->ch[i]) &&
+                refit_channel(R, &R->ch[i], i, (unsigned long)seed_d, hx_flag(&a, "--fit-extra"), &pr, &done,
+                              total) == -3) {
+                int j;
+                for (j = 0; j < R->nch; j++) {
+                    R->ch[j].refitted = 0;
+                }
+                snprintf(R->interrupted, sizeof R->interrupted,
+                         "interrupted by %s in the refits: no interval (the tables, the identification%s are "
+                         "complete)",
+                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT",
+                         hx_flag(&a, "--no-sim") ? "" : " and the simulation check");
+                break;
+            }
+        }
+        if (total > 0.0 && !hx_stop_sig) {
             hx_progress_end(&pr);
         }
     }
