@@ -3137,7 +3137,7 @@ int hx_cmd_allan(int argc, char **argv)
         m_dropped(R);
     }
     if (input_rc > 0) {
-        hx_warn(CMD, "analysing the %lu samples before the error", (unsigned long)R->n);
+        hx_warn(CMD, "analysing the %lu sample%s before the error", (unsigned long)R->n, R->n == 1 ? "" : "s");
         exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
 

@@ -668,7 +668,8 @@ int hx_cmd_info(int argc, char **argv)
     }
     if (log.status != FNAV_END) {
         /* the reader's message was warned when the input was read (hx_load_input()) */
-        hx_error("info", "incomplete input (warned above): the results cover the %zu samples before the error", log.n);
+        hx_error("info", "incomplete input (warned above): the results cover the %zu sample%s before the error", log.n,
+                 log.n == 1 ? "" : "s");
     }
     hx_log_free(&log);
     return exit_code;

@@ -115,7 +115,8 @@ int hx_cmd_merge(int argc, char **argv)
             return HX_EXIT_DATA;
         }
         if (part[k] > 0) {
-            hx_warn("merge", "%s (the %zu samples before it are merged)", f[k].error, f[k].n);
+            hx_warn("merge", "%s (the %zu sample%s before it %s merged)", f[k].error, f[k].n, f[k].n == 1 ? "" : "s",
+                    f[k].n == 1 ? "is" : "are");
         }
         if (f[k].short_rows > 0 || f[k].long_rows > 0) {
             char wt[HX_ERR_SIZE];

@@ -229,10 +229,10 @@ int hx_cmd_simgap(int argc, char **argv)
      * is too short for a confident answer */
     if (lr == 1) {
         if (!r->confident) {
-            hx_error("simgap", "%s (the %zu samples before it are too short for a confident answer: %s)", log.error,
-                     log.n, r->why);
+            hx_error("simgap", "%s (the %zu sample%s before it %s too short for a confident answer: %s)", log.error,
+                     log.n, log.n == 1 ? "" : "s", log.n == 1 ? "is" : "are", r->why);
         } else {
-            hx_error("simgap", "%s (diagnosed on the %zu samples before it)", log.error, log.n);
+            hx_error("simgap", "%s (diagnosed on the %zu sample%s before it)", log.error, log.n, log.n == 1 ? "" : "s");
         }
     } else if (!r->confident) {
         hx_error("simgap", "%s: too short for a confident answer: %s", path, r->why);

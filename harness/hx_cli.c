@@ -590,7 +590,7 @@ int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_
     }
     hx_print_warnings(cmd, log->warnings);
     if (rc > 0) {
-        hx_warn(cmd, "%s (using the %zu samples before it)", log->error, log->n);
+        hx_warn(cmd, "%s (using the %zu sample%s before it)", log->error, log->n, log->n == 1 ? "" : "s");
     }
     return rc;
 }

@@ -1939,7 +1939,7 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->n = (long)log->n;
     r->rate_hz = sg_log_rate(log);
     if (!(r->rate_hz > 0.0) || log->n < 16) {
-        snprintf(err, err_size, "the log has %zu samples and no usable rate", log->n);
+        snprintf(err, err_size, "the log has %zu sample%s and no usable rate", log->n, log->n == 1 ? "" : "s");
         return -1;
     }
     /* the stamps' span plus one period (n / rate on a regular log): n / rate

@@ -686,6 +686,12 @@ expect_exit 1 "info, a field holding a C1 control (U+009B)" "$H" info "$T/csi.cs
 if LC_ALL=C grep -q "$(printf '\302\233')" "$T/err" "$T/out"; then fail "a C1 control of the file reached the terminal"
 else pass "no C1 control of the file in the messages"; fi
 expect_err "column 2 ('0?2J') is not a number" "the C1 control quoted as one '?'"
+# one sample before the error: "1 sample", not "1 samples"
+expect_err "(using the 1 sample before it)" "info: one sample before the error in the singular (warning)"
+expect_err "the results cover the 1 sample before the error" "info: one sample before the error in the singular (error)"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
+expect_exit 1 "simgap, a log of one sample" "$H" simgap "$T/one.csv"
+expect_err "the log has 1 sample and no usable rate" "simgap: one sample in the singular"
 
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
