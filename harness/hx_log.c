@@ -2179,7 +2179,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
                 r->path, r->stats.lines, dc_first);
     } else if (all_numeric(f, n)) {
-        set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)%s",
+        set_err(r, "%s:%ld: the first line is data, not a header: a log of format %s starts with its header (%s)%s",
                 r->path, r->stats.lines, hx_format_name(r->meta.format),
                 r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md",
                 r->meta.format == HX_FMT_CSV && n >= 7 /* fields enough for a time and the six channels */
