@@ -844,8 +844,11 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     }
     if (R->rate_hz <= 0.0) {
         hx_error(CMD, "%s: %s", path,
-                 rc != 0 ? "too few samples before the error to know the sample rate"
-                         : "sample rate unknown; give --rate");
+                 rc != 0       ? "too few samples before the error to know the sample rate"
+                 : R->n > 1u && t_prev == t_first
+                     ? "sample rate unknown: every time stamp is the same (is the time column filled? --rate HZ "
+                       "analyses it at a rate you give)"
+                     : "sample rate unknown; give --rate");
         return -1;
     }
     if (R->n > 0u) {

@@ -1938,8 +1938,19 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->S = r->opts.seeds;
     r->n = (long)log->n;
     r->rate_hz = sg_log_rate(log);
-    if (!(r->rate_hz > 0.0) || log->n < 16) {
+    if (!(r->rate_hz > 0.0) && log->n > 1 && log->t_ns[log->n - 1] == log->t_ns[0]) {
+        /* as replay says it (a rate of "none" was no reason) */
+        snprintf(err, err_size, "the time stamps never advance (all %zu samples at one time): is the time column filled?",
+                 log->n);
+        return -1;
+    }
+    if (!(r->rate_hz > 0.0)) {
         snprintf(err, err_size, "the log has %zu sample%s and no usable rate", log->n, log->n == 1 ? "" : "s");
+        return -1;
+    }
+    if (log->n < 16) {
+        /* a rate it has: not "no usable rate" */
+        snprintf(err, err_size, "the log has %zu samples, too few to diagnose (16 at least)", log->n);
         return -1;
     }
     /* the stamps' span plus one period (n / rate on a regular log): n / rate

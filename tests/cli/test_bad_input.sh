@@ -698,6 +698,16 @@ expect_err "the results cover the 1 sample before the error" "info: one sample b
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
 expect_exit 1 "simgap, a log of one sample" "$H" simgap "$T/one.csv"
 expect_err "the log has 1 sample and no usable rate" "simgap: one sample in the singular"
+# stamps that never advance, and a short log with a rate: each said for
+# what it is (allan said "give --rate", simgap "no usable rate" for both)
+{ echo "t,ax,ay,az,gx,gy,gz"; awk 'BEGIN { for (i = 0; i < 3000; i++) print "5.0,0.01,0.02,9.81,0.001,0.002,0.003" }'; } > "$T/const_t.csv"
+expect_exit 1 "allan, stamps that never advance" "$H" allan "$T/const_t.csv" --no-sim
+expect_err "sample rate unknown: every time stamp is the same (is the time column filled?" "allan: the stamps named"
+expect_exit 1 "simgap, stamps that never advance" "$H" simgap "$T/const_t.csv"
+expect_err "the time stamps never advance (all 3000 samples at one time)" "simgap: the stamps named"
+{ echo "t,ax,ay,az,gx,gy,gz"; awk 'BEGIN { for (i = 0; i < 10; i++) printf "%.2f,0.01,0.02,9.81,0.001,0.002,0.003\n", i * 0.01 }'; } > "$T/ten.csv"
+expect_exit 1 "simgap, ten samples at 100 Hz" "$H" simgap "$T/ten.csv"
+expect_err "the log has 10 samples, too few to diagnose (16 at least)" "simgap: too few said, not 'no usable rate'"
 
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
