@@ -3341,7 +3341,9 @@ int hx_cmd_allan(int argc, char **argv)
                 hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT");
     }
     if (!hx_flag(&a, "--quiet")) {
-        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
+        char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ",
+               hx_line_str(shown, sizeof shown, R->source), R->sensor_text,
                (unsigned long)R->n, R->rate_hz, (int)R->ngrid);
         if (R->exact) {
             printf("exact estimator (the whole record in double, fully overlapping at every tau)\n");

@@ -467,7 +467,10 @@ static int report_empty(const hx_args_t *a, const char *path)
     }
     snprintf(why, sizeof why, "%s", hx_reader_error(r));
     hx_reader_close(r);
-    printf("file        %s\n", path);
+    {
+        char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+        printf("file        %s\n", hx_line_str(shown, sizeof shown, path));
+    }
     printf("format      %s\n", hx_format_name(meta.format));
     printf("sensor      %s\n", meta.sensor);
     print_source(&meta);
@@ -563,7 +566,10 @@ int hx_cmd_info(int argc, char **argv)
         hx_stated_rate_warn("info", a.pos[0], &log.meta, log.t_ns, log.n,
                             "the rate line and the one-second windows of the search for the rest take");
     }
-    printf("file        %s\n", a.pos[0]);
+    {
+        char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+        printf("file        %s\n", hx_line_str(shown, sizeof shown, a.pos[0]));
+    }
     printf("format      %s\n", hx_format_name(log.meta.format));
     printf("sensor      %s\n", log.meta.sensor);
     print_source(&log.meta);

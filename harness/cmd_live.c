@@ -1262,7 +1262,7 @@ int hx_cmd_live(int argc, char **argv)
     /* a closed reader of --out - (live ... | head) is a write error with a
      * summary and a closed recording, not a silent death by SIGPIPE */
     signal(SIGPIPE, SIG_IGN);
-    fprintf(stderr, "harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
+    hx_eprintf("harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
 
     idle_flush_s = (timeout > 0.0 && timeout < 2.0 * IDLE_FLUSH_S) ? 0.5 * timeout : IDLE_FLUSH_S;
     t0 = hx_now_s();
@@ -1342,14 +1342,14 @@ int hx_cmd_live(int argc, char **argv)
     const int rewritten = update_recording_header(&L);
     if (rewritten && !L.have_info) {
         /* no INFO: the samples' own temperatures, the first ones without */
-        fprintf(stderr, "harness live: %s: the header was written again at the end: samples after the first carried "
+        hx_eprintf("harness live: %s: the header was written again at the end: samples after the first carried "
                         "a temperature (no INFO frame came)\n", L.record_path);
     } else if (rewritten) {
         const int info_changed = !L.hdr_has_info || L.hdr_info.rate_hz != L.info.rate_hz ||
                                  info_flags_differ(&L.hdr_info, &L.info) || strcmp(L.hdr_info.sensor, L.info.sensor) != 0 ||
                                  strcmp(L.hdr_info.axes, L.info.axes) != 0;
         const int no_seq = (L.info.flags & FNAV_WIRE_INFO_SEQ) != 0u && L.seq_undeclared;
-        fprintf(stderr, "harness live: %s: the header was written again at the end with the sender's last INFO "
+        hx_eprintf("harness live: %s: the header was written again at the end with the sender's last INFO "
                         "frame (%s%s%s)\n",
                 L.record_path, !L.hdr_has_info ? "none had come by the first sample"
                                : L.rate_changed ? "it changed during the session; the rate given as unknown"

@@ -49,7 +49,7 @@ static void describe(const char *path, const hx_tri_t *f)
 {
     const double span = f->n > 1 ? (double)(f->t_ns[f->n - 1] - f->t_ns[0]) * 1e-9 : 0.0;
     hx_line_break();
-    fprintf(stderr, "harness merge: %s: %zu samples, %.6g Hz, %.6g s; time '%s' %s%s, x, y, z '%s', '%s', '%s' in %s%s\n",
+    hx_eprintf("harness merge: %s: %zu samples, %.6g Hz, %.6g s; time '%s' %s%s, x, y, z '%s', '%s', '%s' in %s%s\n",
             path, f->n, f->rate_hz, span, f->cols[0], f->time_unit != NULL ? "in " : "as dates and times",
             f->time_unit != NULL ? f->time_unit : "", f->cols[1], f->cols[2], f->cols[3], f->unit,
             strcmp(f->unit_from, "named") == 0 ? "" : strcmp(f->unit_from, "--units") == 0 ? " (--units)"
@@ -238,7 +238,7 @@ int hx_cmd_merge(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (exit_code == HX_EXIT_OK) {
-        fprintf(stderr,
+        hx_eprintf(
                 "harness merge: wrote %ld samples at the %s's stamps (%s), the %s's interpolated linearly; left out: "
                 "%ld before and %ld after the %s's span, %ld in its gaps (over %.3g ms, %g of its periods)\n",
                 written, base == 0 ? "accelerometer" : "gyroscope", a.pos[base],

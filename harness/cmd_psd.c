@@ -959,8 +959,9 @@ int hx_cmd_psd(int argc, char **argv)
         } else {
             snprintf(sensor_text, sizeof sensor_text, "%s", log.meta.sensor);
         }
-        printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], sensor_text, log.n, rate,
-               (double)log.n / rate);
+        char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+        printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", hx_line_str(shown, sizeof shown, a.pos[0]),
+               sensor_text, log.n, rate, (double)log.n / rate);
     }
     {
         char title[1024], dct[256], rndt[64];

@@ -329,6 +329,49 @@ void hx_line_break(void)
     }
 }
 
+/* A message's text to standard error with each control character
+ * (hx_control_len) as '?': a path or a field that a message quotes is the
+ * text of a file name or a file, and an escape sequence in it (ESC ]0;...
+ * sets the terminal's title, CSI clears it) must not reach the terminal
+ * as one; no message of the harness holds a control character of its
+ * own (its line ends are written here). */
+static void put_msg(const char *fmt, va_list ap)
+{
+    char buf[4096], *p = buf;
+    const char *s;
+    va_list aq;
+    int n;
+    va_copy(aq, ap);
+    n = vsnprintf(buf, sizeof buf, fmt, aq);
+    va_end(aq);
+    if (n < 0) {
+        return;
+    }
+    if ((size_t)n >= sizeof buf) {
+        char *big = malloc((size_t)n + 1u);
+        if (big != NULL) { /* else the message is cut at 4095 bytes */
+            (void)vsnprintf(big, (size_t)n + 1u, fmt, ap);
+            p = big;
+        }
+    }
+    for (s = p; *s != '\0';) {
+        const size_t k = s[0] == '\n' && s[1] == '\0' ? 0u : hx_control_len(s); /* the line's own end */
+        fputc(k > 0u ? '?' : *s, stderr);
+        s += k > 0u ? k : 1u;
+    }
+    if (p != buf) {
+        free(p);
+    }
+}
+
+void hx_eprintf(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    put_msg(fmt, ap);
+    va_end(ap);
+}
+
 /* The process's first error message (hx_json_failure) and whether a JSON
  * was written (hx_write_json). */
 static char g_first_error[1024];
@@ -345,7 +388,7 @@ void hx_error(const char *cmd, const char *fmt, ...)
     hx_line_break();
     fprintf(stderr, "harness %s: error: ", cmd);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    put_msg(fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
 }
@@ -417,7 +460,7 @@ void hx_warn(const char *cmd, const char *fmt, ...)
     hx_line_break();
     fprintf(stderr, "harness %s: warning: ", cmd);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    put_msg(fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
 }
@@ -531,7 +574,9 @@ void hx_print_warnings(const char *cmd, const char *w)
         if (strncmp(line, "note: ", 6) == 0) {
             if (!warn_repeat(cmd, "note", line + 6)) {
                 hx_line_break();
-                fprintf(stderr, "harness %s: note: %s\n", cmd, line + 6); /* routine: nothing to act on */
+                fprintf(stderr, "harness %s: note: ", cmd); /* routine: nothing to act on */
+                hx_eprintf("%s", line + 6);
+                fputc('\n', stderr);
             }
         } else {
             hx_warn(cmd, "%s", line);
@@ -931,7 +976,7 @@ int hx_json_failure(const char *cmd, int argc, char **argv)
     cJSON_Delete(root);
     if (rc != 0) {
         hx_line_break();
-        fprintf(stderr, "harness %s: error: %s\n", cmd, err);
+        hx_eprintf("harness %s: error: %s\n", cmd, err);
     }
     return rc;
 }

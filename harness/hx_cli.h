@@ -320,6 +320,16 @@ void hx_json_num(struct cJSON *o, const char *k, double v);
  *  path, a file name, a unit) goes through it, so that it stays text. */
 const char *hx_gp_str(char *buf, size_t size, const char *s);
 
+/** printf to standard error with each control character of the text
+ *  (hx_control_len) written as '?' but a line end that ends it, as
+ *  hx_error and hx_warn write theirs: for a line that quotes a path or a
+ *  file's text outside those (merge's account of a file). */
+void hx_eprintf(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
 /** The length in bytes of the control character s starts with, 0 when it
  *  starts with none: 1 for an ASCII one (below 0x20, and DEL), 2 for a C1
  *  one in UTF-8 (U+0080-U+009F, C2 80-9F: U+009B is a terminal's CSI, as

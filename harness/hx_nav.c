@@ -2966,7 +2966,8 @@ int hx_nav_little_motion(const hx_nav_summary_t *s)
 void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s)
 {
     const fnav_nav_stats_t *st = &t->stats;
-    fprintf(f, "log               %s\n", path);
+    char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+    fprintf(f, "log               %s\n", hx_line_str(shown, sizeof shown, path));
     if (t->have_config) {
         char cfg[1024];
         hx_nav_config_text(t, cfg, sizeof cfg);

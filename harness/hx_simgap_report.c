@@ -2,6 +2,7 @@
  * hx_simgap_json.c, plots in hx_simgap_plot.c. */
 #include "hx_simgap.h"
 #include "hx_simgap_nav.h"
+#include "hx_cli.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -440,17 +441,18 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
 {
     debug_points(f, r);
     int ch, i, d;
-    char b[256];
+    char b[256], shown[sizeof r->path]; /* the path's control characters as '?' (hx_line_str), as in the messages */
+    (void)hx_line_str(shown, sizeof shown, r->path);
     /* %.3g: with %.0f, --fit-frac 0.25 would read "the first and last 12 %,
      * held out the middle 75 %" */
     if (r->segs.sandwich) {
         fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.3g %%, held out the "
                    "middle %.3g %%\n",
-                r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s,
+                shown, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s,
                 50.0 * r->opts.fit_frac, 100.0 * (1.0 - r->opts.fit_frac));
     } else {
         fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.3g %%, held out the last %.3g %%\n",
-                r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
+                shown, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
                 100.0 * (1.0 - r->opts.fit_frac));
     }
     if (r->opts.domain != 0 && r->domain != r->domain_detected) {

@@ -709,5 +709,23 @@ expect_err "the time stamps never advance (all 3000 samples at one time)" "simga
 expect_exit 1 "simgap, ten samples at 100 Hz" "$H" simgap "$T/ten.csv"
 expect_err "the log has 10 samples, too few to diagnose (16 at least)" "simgap: too few said, not 'no usable rate'"
 
+# a file name holding an escape sequence (a data set's file, reached by a
+# glob): the messages and the reports' file lines show it with '?' for
+# each control character; before, info's `file` line, replay's `log`
+# line, allan's, psd's and simgap's headers and every message naming the
+# path (`cannot open`) wrote it as it was
+escname="$T/w$(printf '\033')]0;X$(printf '\007').csv"
+expect_exit 0 "sim into a file name holding an escape sequence" "$H" sim --duration 10 --out "$escname"
+for c in info replay "allan --no-sim" psd simgap; do
+    # shellcheck disable=SC2086 # the command and its option split
+    "$H" $c "$escname" >"$T/out" 2>"$T/err"
+    if LC_ALL=C grep -q "$(printf '\033')" "$T/out" "$T/err"; then fail "$c: the file name's escape reached the terminal"
+    else pass "$c: the file name shown without its control characters"; fi
+done
+expect_exit 0 "info of that file" "$H" info "$escname"
+expect_out "^file        .*/w?]0;X?.csv$" "info: the file line with '?' for each control character"
+expect_exit 1 "info of a missing file whose name holds an escape" "$H" info "$T/none$(printf '\033')[2J"
+expect_err "none?\[2J: cannot open" "the message's path with '?' for its control character"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
