@@ -2356,9 +2356,12 @@ static void base_name(const char *path, char *out, size_t n)
         *dot = '\0';
     }
     for (c = out; *c != '\0'; c++) {
-        if (hx_control_len(c) > 0u) {
+        const size_t k = hx_control_len(c);
+        if (k > 0u) {
             *c = '_'; /* the name is one line of the profile (a C1 one's two bytes: two '_') */
-            c[1] = (unsigned char)c[1] >= 0x80u ? '_' : c[1];
+            if (k == 2u) {
+                *++c = '_'; /* not the lead byte of a character after an ASCII one ('\001' U+00E9 kept its U+00E9) */
+            }
         }
     }
 }
@@ -3318,9 +3321,9 @@ int hx_cmd_allan(int argc, char **argv)
                     R->ch[j].refitted = 0;
                 }
                 snprintf(R->interrupted, sizeof R->interrupted,
-                         "interrupted by %s in the refits: no interval (the tables, the identification%s are "
+                         "interrupted by %s in the refits: no interval (the tables%s the identification%s are "
                          "complete)",
-                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT",
+                         hx_stop_sig == SIGTERM ? "SIGTERM" : "SIGINT", hx_flag(&a, "--no-sim") ? " and" : ",",
                          hx_flag(&a, "--no-sim") ? "" : " and the simulation check");
                 break;
             }

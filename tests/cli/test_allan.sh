@@ -151,6 +151,13 @@ expect_err "five.profile: the white noise of 6 channels (the bound's, above) is 
 expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profile "$T/ten.profile"
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
     pass "10 s: 1 s within the identified range, no short-record warning"
+# the profile's name from a log name holding an ASCII control character before a UTF-8 letter: that one '_', the
+# letter kept (a C1 rule's second '_' overwrote the lead byte of the letter after an ASCII one: 'a__\251b')
+cp "$T/ten.csv" "$T/$(printf 'a\001\303\251b').csv"
+expect_exit 0 "a control character in the log's name: a profile" "$H" allan "$T/$(printf 'a\001\303\251b').csv" --no-sim \
+    --quiet --profile "$T/ctl.profile"
+grep -q "^name = $(printf 'a_\303\251b')\$" "$T/ctl.profile" && pass "the profile's name: the control character '_', the letter after it kept" ||
+    fail "the profile's name: $(grep -a '^name' "$T/ctl.profile" | od -c | head -2 | tr '\n' ' ')"
 # several failures in one run: an output that cannot be written (3) decides over bad input or a refused profile (1),
 # since exit 1 says every output was written; every other output is still written. Were the last one set to decide,
 # a cut static log with --profile onto a full disk would say 1, and a walk with --json onto a full disk 3, but
@@ -1476,7 +1483,7 @@ wait_line "$T/rfint.err" "allan: refits (parametric bootstrap)"
 kill -INT "$p" 2>/dev/null
 wait "$p"; rc=$?
 [ "$rc" -eq 130 ] && pass "SIGINT in the refits: exit 130" || fail "SIGINT in the refits: exit $rc: $(cat "$T/rfint.err")"
-json "$T/rfint.json" '(j["complete"] is False and "SIGINT in the refits" in j["interrupted"]
+json "$T/rfint.json" '(j["complete"] is False and "SIGINT in the refits: no interval (the tables and the identification are complete)" in j["interrupted"]
     and "refits" not in j["channels"][0]["corrected"] and j["channels"][0]["corrected"].get("tau_samples") is not None)' &&
     pass "SIGINT in the refits: the JSON written without an interval" ||
     fail "SIGINT in the refits: the JSON: $(head -c 600 "$T/rfint.json")"
