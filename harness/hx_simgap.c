@@ -1950,7 +1950,8 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     }
     if (log->n < 16) {
         /* a rate it has: not "no usable rate" */
-        snprintf(err, err_size, "the log has %zu samples, too few to diagnose (16 at least)", log->n);
+        snprintf(err, err_size, "the log has %zu sample%s, too few to diagnose (16 at least)", log->n,
+                 log->n == 1 ? "" : "s");
         return -1;
     }
     /* the stamps' span plus one period (n / rate on a regular log): n / rate

@@ -708,6 +708,10 @@ expect_err "the time stamps never advance (all 3000 samples at one time)" "simga
 { echo "t,ax,ay,az,gx,gy,gz"; awk 'BEGIN { for (i = 0; i < 10; i++) printf "%.2f,0.01,0.02,9.81,0.001,0.002,0.003\n", i * 0.01 }'; } > "$T/ten.csv"
 expect_exit 1 "simgap, ten samples at 100 Hz" "$H" simgap "$T/ten.csv"
 expect_err "the log has 10 samples, too few to diagnose (16 at least)" "simgap: too few said, not 'no usable rate'"
+# one sample with a rate (--input-rate): "1 sample", as without one
+printf 'ax,ay,az,gx,gy,gz\n0.01,0.02,9.81,0.001,0.002,0.003\n' > "$T/one_nt.csv"
+expect_exit 1 "simgap, one sample at a given rate" "$H" simgap "$T/one_nt.csv" --input-rate 100
+expect_err "the log has 1 sample, too few to diagnose (16 at least)" "simgap: one sample with a rate in the singular"
 
 # a file name holding an escape sequence (a data set's file, reached by a
 # glob): the messages and the reports' file lines show it with '?' for
