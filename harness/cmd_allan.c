@@ -130,7 +130,8 @@ typedef struct {
     uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
     unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: 1 over --max-work, 2 interrupted (a signal) */
     /* --refits: the parametric bootstrap of the corrected fit (refit_all()) */
-    int refitted;        /* 1: its refits ran to the end (0: not eligible, none asked, or interrupted) */
+    int refitted;        /* 1: its refits ran to the end (0: not eligible, none asked, interrupted, or out of memory) */
+    int rf_oom;          /* 1: its refits stopped out of memory (said; exit 1) */
     int rf_ok, rf_fit_failed, rf_unresolved; /* refits fitted with their AR(1) identified; fit failed; AR(1) not */
     double rf_ci[3][2];  /* sigma_v, tau (samples), sigma_bias: 15.87 and 84.13 percentiles (NAN: < 2 ok) */
 } chan_t;
@@ -1545,7 +1546,7 @@ static int refit_table(run_t *R, chan_t *t, const hx_noise_model_t *mdl, unsigne
     t->nx = 0u;
     for (k = 0; rc == 0 && k < R->nrefit; k++) {
         if (record(t, hx_noise_sim_next(&s)) != 0) {
-            rc = -1;
+            rc = -4; /* out of memory: not a fit that failed */
         }
         if ((k & 65535u) == 0u) {
             hx_progress_update(pr, (*done + (double)k) / total);
@@ -1562,17 +1563,31 @@ static int refit_table(run_t *R, chan_t *t, const hx_noise_model_t *mdl, unsigne
     return rc;
 }
 
+/* The seed of refit k of the i-th channel: (seed, i, k) mixed by
+ * splitmix64's finaliser (Steele, Lea and Flood 2014), so that the refits
+ * of --seed 1 and --seed 2 share none (seed + 1,000,000 (i + 1) + k made
+ * 19 of 20 the same, shifted by one: the reviewer's finding) and none is
+ * a Fig. 7 check's seed (seed + 1000 i and + 1) but by chance; never 0. */
+static unsigned long refit_seed(unsigned long seed, int i, long k)
+{
+    uint64_t z = (uint64_t)seed * UINT64_C(0x9E3779B97F4A7C15) + ((uint64_t)(unsigned)(i + 1) << 40) + (uint64_t)k;
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    z ^= z >> 31;
+    return (unsigned long)z != 0ul ? (unsigned long)z : 1ul;
+}
+
 /* --refits: a parametric bootstrap of a channel's corrected fit. The
- * fitted model is simulated R->refits times at R->nrefit samples (seed +
- * 1,000,000 (i + 1) + k for refit k of the i-th channel, apart from the
- * Fig. 7 check's seed + 1000 i and + 1), each through the same estimator,
+ * fitted model is simulated R->refits times at R->nrefit samples (seeds
+ * refit_seed()), each through the same estimator,
  * identified as the measured table was (the same options, tau up to
  * --max-tau-frac of the simulated record) and its AR(1) part tested as
  * the measured one's (ar1_identified_in()); a refit whose fit fails or
  * whose AR(1) part is not identified is counted, not used. The interval
  * is the 15.87 and 84.13 percentiles (the central 68.27 %, one sigma) of
  * the refits that are used, none when fewer than 2.
- * @return 0; -3 interrupted (the channel's refitted stays 0) */
+ * @return 0; -3 interrupted (the channel's refitted stays 0); -1 out of
+ *         memory (said; rf_oom set, refitted 0) */
 static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fit_extra, hx_progress_t *pr,
                          double *done, double total)
 {
@@ -1582,6 +1597,7 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
     long k;
     int q, rc = 0;
     ch->rf_ok = ch->rf_fit_failed = ch->rf_unresolved = 0;
+    ch->rf_oom = 0;
     for (q = 0; q < 3; q++) {
         ch->rf_ci[q][0] = ch->rf_ci[q][1] = (double)NAN;
     }
@@ -1589,6 +1605,7 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
         free(t);
         free(v);
         hx_error(CMD, "%s: %s: out of memory for the refits", R->source, ch->name);
+        ch->rf_oom = 1;
         return -1;
     }
     t->scale = 1.0; /* the model is in display units */
@@ -1598,10 +1615,17 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
     o.tau_max_s = R->tau_max_frac * (double)R->nrefit / R->rate_hz;
     for (k = 0; k < R->refits; k++) {
         hx_allan_ident_t id;
-        const int st = refit_table(R, t, &ch->id.fit, seed + 1000000ul * (unsigned long)(i + 1) + (unsigned long)k,
-                                   pr, done, total);
+        const int st = refit_table(R, t, &ch->id.fit, refit_seed(seed, i, k), pr, done, total);
         if (st == -3 || hx_stop_sig) {
             rc = -3;
+            break;
+        }
+        if (st == -4) {
+            hx_error(CMD, "%s: %s: out of memory for the refits (--estimator exact keeps each simulated record, 8 "
+                          "to 16 bytes per sample)",
+                     R->source, ch->name);
+            ch->rf_oom = 1;
+            rc = -1;
             break;
         }
         if (st != 0 || hx_allan_identify(t->res, t->nres, R->rate_hz, &o, &id) != 0 || !id.fit_ok) {
@@ -1844,7 +1868,8 @@ static void print_refits(const run_t *R)
         const int failed = ch->rf_fit_failed + ch->rf_unresolved;
         printf("%-6s %-6s | ", ch->label, ch->unit);
         if (!ch->refitted) {
-            printf("n/a (no corrected fit with its AR(1) part identified: not refitted)\n");
+            printf("%s\n", ch->rf_oom ? "n/a (out of memory for the refits: the error above)"
+                                      : "n/a (no corrected fit with its AR(1) part identified: not refitted)");
             continue;
         }
         if (ch->rf_ok >= 2) {
@@ -2158,6 +2183,12 @@ static int write_json(const run_t *R, const char *path)
         /* false: no fit, or the curve does not resolve its AR(1) part; a
          * --profile then holds the bound from the Allan minimum */
         cJSON_AddBoolToObject(p, "ar1_identified", ch->id_ok && ar1_resolved(R, ch));
+        if (ch->rf_oom) {
+            /* the refits stopped out of memory (said, exit 1): no interval */
+            cJSON *rf = cJSON_AddObjectToObject(p, "refits");
+            hx_json_num(rf, "requested", (double)R->refits);
+            cJSON_AddStringToObject(rf, "error", "out of memory");
+        }
         if (ch->refitted) {
             /* --refits: the parametric bootstrap's counts and 68 % intervals
              * (null: fewer than 2 refits usable) */
@@ -3313,9 +3344,13 @@ int hx_cmd_allan(int argc, char **argv)
             hx_progress_start(&pr, "allan: refits (parametric bootstrap)", 1.0);
         }
         for (i = 0; i < R->nch && total > 0.0; i++) {
-            if (refit_eligible(R, &R->ch[i]) &&
-                refit_channel(R, &R->ch[i], i, (unsigned long)seed_d, hx_flag(&a, "--fit-extra"), &pr, &done,
-                              total) == -3) {
+            const int rf = refit_eligible(R, &R->ch[i]) ? refit_channel(R, &R->ch[i], i, (unsigned long)seed_d,
+                                                                        hx_flag(&a, "--fit-extra"), &pr, &done, total)
+                                                        : 0;
+            if (rf == -1) {
+                exit_code = worse_exit(exit_code, HX_EXIT_DATA); /* said; the other channels go on */
+            }
+            if (rf == -3) {
                 int j;
                 for (j = 0; j < R->nch; j++) {
                     R->ch[j].refitted = 0;
