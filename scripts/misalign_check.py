@@ -67,6 +67,12 @@ def rotvec_matrix(v_deg):
 
 def run(args):
     r = subprocess.run([H] + args, capture_output=True, text=True)
+    # simgap exits 1 on a walk with fewer than 10 held-out stances (xio short:
+    # 8) but still prints its summary, nis_first included: only the twins'
+    # comparison is not confident, not the real log's own NIS used here
+    if r.returncode == 1 and args[0] == "simgap" and "too short for a confident answer" in r.stderr \
+            and re.search(r"nis_first\s+real\s+\S+", r.stdout):
+        return r.stdout
     if r.returncode != 0:
         sys.exit("harness %s failed: %s" % (args[0], r.stderr.strip()))
     return r.stdout
