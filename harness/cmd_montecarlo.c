@@ -274,8 +274,10 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
     char c1[32], c2[32], c3[32], c4[32], s1[40], s2[40];
     printf("montecarlo  %d seeds of '%s': %.1f s, %.1f m between footfalls, %g Hz\n", r->runs, motion, r->duration_s,
            r->distance_m, rate);
-    printf("sensor      %s (%s%s), filter %s (bias sigma: %s)\n", profile, br->sensor != NULL ? "bias sigma: " : "",
-           br->sensor != NULL ? reading_text(br->sensor) : "no bias model", fprofile, reading_text(br->filter));
+    char shown[2][4096]; /* a profile file's name: its control characters as '?' (hx_line_str), as in the messages */
+    printf("sensor      %s (%s%s), filter %s (bias sigma: %s)\n", hx_line_str(shown[0], sizeof shown[0], profile),
+           br->sensor != NULL ? "bias sigma: " : "", br->sensor != NULL ? reading_text(br->sensor) : "no bias model",
+           hx_line_str(shown[1], sizeof shown[1], fprofile), reading_text(br->filter));
     for (v = 0; v < r->nvar; v++) {
         const hx_mc_var_t *x = &r->var[v];
         stats_t h = stats_of(x->final_h_m, r->runs), z = stats_of(x->final_v_m, r->runs);

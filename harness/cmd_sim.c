@@ -241,7 +241,7 @@ int hx_cmd_sim(int argc, char **argv)
          * standard error, as replay's, not dropped */
         FILE *so = strcmp(out, "-") == 0 ? stderr : stdout;
         hx_truth_t end;
-        char spec[1024];
+        char spec[1024], shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
         int id;
         /* the output's span: its last tick, (ticks - 1) / rate; a
          * --duration between two ticks (7.0049 s at 100 Hz) prints the last
@@ -258,7 +258,7 @@ int hx_cmd_sim(int argc, char **argv)
                     : fnav_imuerr_internal_factor(&sc.err) > 1u ? "anti-alias FIR"
                                                                   : "point samples",
                     sc.err.seed);
-        fprintf(so, "profile     %s\n", profile);
+        fprintf(so, "profile     %s\n", hx_line_str(shown, sizeof shown, profile));
         for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {
             if (hx_effect_format(&sc.err, (fnav_effect_id_t)id, spec, sizeof spec) > 0) {
                 fprintf(so, "effect      %s\n", spec);
@@ -270,9 +270,9 @@ int hx_cmd_sim(int argc, char **argv)
          * hold; '|f|' would read as the norm */
         fprintf(so, "peaks       largest on one axis: f %.1f m/s^2 (%.1f g), w %.2f rad/s (%.0f deg/s)\n", ctx.peak_f,
                     ctx.peak_f / 9.80665, ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
-        fprintf(so, "log         %s\n", out);
+        fprintf(so, "log         %s\n", hx_line_str(shown, sizeof shown, out));
         if (truth != NULL) {
-            fprintf(so, "truth       %s\n", truth);
+            fprintf(so, "truth       %s\n", hx_line_str(shown, sizeof shown, truth));
         }
         if (ctx.written == 0u) {
             /* as convert's empty window: said, exit 1, the log valid and

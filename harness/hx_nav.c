@@ -2971,7 +2971,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     if (t->have_config) {
         char cfg[1024];
         hx_nav_config_text(t, cfg, sizeof cfg);
-        fprintf(f, "config            %s\n", cfg);
+        fprintf(f, "config            %s\n", hx_line_str(shown, sizeof shown, cfg)); /* a profile file's name */
     }
     if (t->in_rate_hz > 0.0) {
         fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)",

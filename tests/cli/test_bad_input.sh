@@ -730,6 +730,24 @@ expect_exit 0 "info of that file" "$H" info "$escname"
 expect_out "^file        .*/w?]0;X?.csv$" "info: the file line with '?' for each control character"
 expect_exit 1 "info of a missing file whose name holds an escape" "$H" info "$T/none$(printf '\033')[2J"
 expect_err "none?\[2J: cannot open" "the message's path with '?' for its control character"
+# the same for the other report lines that name a file: sim's `log`, `truth` and `profile` lines, replay's
+# `config` line (a profile file's name) and montecarlo's `sensor` line; before, they wrote it as it was
+escprof="$T/p$(printf '\033')[2J.profile"
+cp "$(dirname "$0")/../../docs/profiles/generic-mems.profile" "$escprof"
+"$H" sim --duration 10 --out "$T/w$(printf '\033')[2J.csv" --truth "$T/t$(printf '\033')[2J.csv" --profile "$escprof" \
+    >"$T/out" 2>"$T/err"
+if LC_ALL=C grep -q "$(printf '\033')" "$T/out" "$T/err"; then fail "sim: a file name's escape reached the terminal"
+else pass "sim: the log, truth and profile lines without their control characters"; fi
+expect_out "^profile     .*/p?\[2J.profile$" "sim: the profile line with '?' for the control character"
+expect_out "^log         .*/w?\[2J.csv$" "sim: the log line with '?' for the control character"
+expect_out "^truth       .*/t?\[2J.csv$" "sim: the truth line with '?' for the control character"
+for c in replay montecarlo; do
+    if [ "$c" = replay ]; then "$H" replay "$escname" --profile "$escprof"
+    else "$H" montecarlo --seeds 2 --duration 10 --profile "$escprof"; fi >"$T/out" 2>"$T/err"
+    if LC_ALL=C grep -q "$(printf '\033')" "$T/out" "$T/err"; then fail "$c: the profile file's escape reached the terminal"
+    elif grep -q "p?\[2J.profile" "$T/out"; then pass "$c: the profile file's name shown with '?'"
+    else fail "$c: the profile file's name not shown"; fi
+done
 
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
