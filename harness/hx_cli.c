@@ -337,7 +337,7 @@ void hx_line_break(void)
  * own (its line ends are written here). */
 static void put_msg(const char *fmt, va_list ap)
 {
-    char buf[4096], *p = buf;
+    char buf[4096], *p = buf, *o;
     const char *s;
     va_list aq;
     int n;
@@ -354,11 +354,17 @@ static void put_msg(const char *fmt, va_list ap)
             p = big;
         }
     }
-    for (s = p; *s != '\0';) {
+    /* in place (a control character's one or two bytes become one '?'),
+     * then one write: stderr is unbuffered, and a character at a time was
+     * a write(2) per byte, which a concurrent writer's line (a parallel
+     * job's, into the same log) could split */
+    for (s = p, o = p; *s != '\0';) {
         const size_t k = s[0] == '\n' && s[1] == '\0' ? 0u : hx_control_len(s); /* the line's own end */
-        fputc(k > 0u ? '?' : *s, stderr);
+        *o++ = k > 0u ? '?' : *s;
         s += k > 0u ? k : 1u;
     }
+    *o = '\0';
+    (void)fputs(p, stderr);
     if (p != buf) {
         free(p);
     }

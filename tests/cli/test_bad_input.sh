@@ -749,5 +749,16 @@ for c in replay montecarlo; do
     else fail "$c: the profile file's name not shown"; fi
 done
 
+# a message is written whole, not a character at a time: stderr is unbuffered, and the rule's first form wrote
+# each character by itself (a write(2) per byte, some 60 for this message; a parallel job's line into the same
+# log could split); now the prefix, the text and the line end (strace, where it runs)
+if command -v strace >/dev/null 2>&1 && strace -o /dev/null true >/dev/null 2>&1; then
+    strace -e trace=write -o "$T/strace" "$H" info "$T/none$(printf '\033')[2J" >/dev/null 2>&1
+    nw=$(grep -c '^write(2,' "$T/strace")
+    [ "$nw" -le 4 ] && pass "the message written whole ($nw writes)" || fail "the message written in $nw writes (a byte each?)"
+else
+    echo "note: the message's writes not counted (no strace, or it cannot trace here)"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
