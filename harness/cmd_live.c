@@ -1513,7 +1513,9 @@ int hx_cmd_live(int argc, char **argv)
         if (!L.traj.aligned && L.samples > 0u) {
             fprintf(sum_out, "live: no navigation: the filter never aligned (the foot must be still at the start)\n");
         }
-        fprintf(sum_out, "live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n", a.pos[0],
+        char shown[4096]; /* a file name's control characters as '?' (hx_line_str), as in the messages */
+        fprintf(sum_out, "live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n",
+               hx_line_str(shown, sizeof shown, a.pos[0]),
                (unsigned)L.samples, span, span > 0.0 ? (double)(L.samples - 1u) / span : 0.0, hx_now_s() - t0);
         fprintf(sum_out, "live: frames: %u valid (info %u, sample %u, nav %u, status %u, end %u, unknown %u)\n",
                (unsigned)s->frames, (unsigned)L.by_type[FNAV_WIRE_INFO], (unsigned)L.by_type[FNAV_WIRE_SAMPLE],
@@ -1552,10 +1554,12 @@ int hx_cmd_live(int argc, char **argv)
         if (L.record_path != NULL && L.rec != NULL) {
             /* what the file holds, not what was received (after a write
              * error the rest of the read is not counted) */
-            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.recorded, L.record_path,
+            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.recorded,
+                    hx_line_str(shown, sizeof shown, L.record_path),
                    L.rec_failed ? " (recording failed, see above)" : "");
         } else if (L.record_path != NULL) {
-            fprintf(sum_out, "live: nothing recorded: no sample was received (%s not written)\n", L.record_path);
+            fprintf(sum_out, "live: nothing recorded: no sample was received (%s not written)\n",
+                    hx_line_str(shown, sizeof shown, L.record_path));
         }
         if (L.samples == 0u && L.by_type[FNAV_WIRE_NAV] > 0u) {
             fprintf(sum_out, "live: the sender sends NAV frames but no SAMPLE frames: live navigates and records "

@@ -1149,6 +1149,17 @@ wait_live
 grep_in "$T/stream.err" "--hangup-after 1000: .* has 300 samples, which end first, with the END frame" "a hang-up beyond the log is said"
 stop_link
 
+# a recording's name holding an escape sequence: the summary's `recorded ... to` line shows it with '?' (it wrote
+# it as it was, as the port's name in its first line)
+start_link
+start_live --record "$T/r$(printf '\033')[2J.bin" --timeout 5
+stream "$T/s300.csv" --speed 0
+wait_live
+if LC_ALL=C grep -q "$(printf '\033')" "$T/live.out" "$T/live.err"; then fail "live: the recording's escape reached the terminal"
+else pass "live: the recording's name shown without its control characters"; fi
+grep_in "$T/live.out" "recorded 300 samples to .*/r?\[2J.bin" "live: the recorded line with '?' for the control character"
+stop_link
+
 if [ "$fails" -ne 0 ]; then
     echo "test_live.sh: $fails failure(s)"
     exit 1
