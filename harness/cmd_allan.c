@@ -1458,7 +1458,10 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
     }
 }
 
-/* Simulate a model through estimators with the same grid (Fig. 7 check). */
+/* Simulate a model through estimators with the same grid (Fig. 7 check,
+ * and --refits' streaming path).
+ * @return 0; -1 the model refused; -2 beyond the core's input range;
+ * -3 interrupted; -4 out of memory */
 static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t nsim, unsigned long seed,
                     fnav_allan_result_t *out, hx_progress_t *pr, double *done, double total)
 {
@@ -1471,9 +1474,9 @@ static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t 
     if (hx_noise_sim_init(&s, &m, R->rate_hz, seed) != 0) {
         return -1;
     }
-    for (c = 0; c < R->nchunk && ok; c++) {
+    for (c = 0; c < R->nchunk && ok == 1; c++) {
         est[c] = (fnav_allan_t *)malloc(sizeof(fnav_allan_t));
-        ok = est[c] != NULL && fnav_allan_init(est[c], &R->cfg[c]) == FNAV_OK;
+        ok = est[c] == NULL ? -4 /* out of memory */ : fnav_allan_init(est[c], &R->cfg[c]) == FNAV_OK;
     }
     for (k = 0; ok == 1 && k < nsim; k++) {
         const fnav_real_t v = (fnav_real_t)hx_noise_sim_next(&s);
@@ -1529,8 +1532,8 @@ static int cmp_double(const void *a, const void *b)
 /* The model simulated at R->nrefit samples through the estimator the
  * measured table came from (the streaming one, or --estimator exact's
  * record), into t's table (display units, t->scale 1).
- * @return 0; -1 failed (the model refused, out of memory); -2 beyond the
- * streaming estimator's input range; -3 interrupted */
+ * @return 0; -1 failed (the model refused); -2 beyond the streaming
+ * estimator's input range; -3 interrupted; -4 out of memory */
 static int refit_table(run_t *R, chan_t *t, const hx_noise_model_t *mdl, unsigned long seed, hx_progress_t *pr,
                        double *done, double total)
 {
@@ -1621,9 +1624,8 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
             break;
         }
         if (st == -4) {
-            hx_error(CMD, "%s: %s: out of memory for the refits (--estimator exact keeps each simulated record, 8 "
-                          "to 16 bytes per sample)",
-                     R->source, ch->name);
+            hx_error(CMD, "%s: %s: out of memory for the refits%s", R->source, ch->name,
+                     R->exact ? " (--estimator exact keeps each simulated record, 8 to 24 bytes per sample)" : "");
             ch->rf_oom = 1;
             rc = -1;
             break;

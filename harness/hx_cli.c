@@ -349,9 +349,17 @@ static void put_msg(const char *fmt, va_list ap)
     }
     if ((size_t)n >= sizeof buf) {
         char *big = malloc((size_t)n + 1u);
-        if (big != NULL) { /* else the message is cut at 4095 bytes */
+        if (big != NULL) {
             (void)vsnprintf(big, (size_t)n + 1u, fmt, ap);
             p = big;
+        } else {
+            /* out of memory: the message cut at a character's start, and
+             * said to be ("...") */
+            size_t e = sizeof buf - 4u;
+            while (e > 0u && ((unsigned char)buf[e] & 0xc0u) == 0x80u) {
+                e--;
+            }
+            memcpy(buf + e, "...", 4u);
         }
     }
     /* in place (a control character's one or two bytes become one '?'),
