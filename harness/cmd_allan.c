@@ -129,7 +129,7 @@ typedef struct {
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
     uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
     unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: 1 over --max-work, 2 interrupted (a signal) */
-    /* --refits: the parametric bootstrap of the corrected fit (refit_all()) */
+    /* --refits: the parametric bootstrap of the corrected fit (refit_channel()) */
     int refitted;        /* 1: its refits ran to the end (0: not eligible, none asked, interrupted, or out of memory) */
     int rf_oom;          /* 1: its refits stopped out of memory (said; exit 1) */
     int rf_ok, rf_fit_failed, rf_unresolved; /* refits fitted with their AR(1) identified; fit failed; AR(1) not */
@@ -1513,22 +1513,6 @@ static int ar1_identified_in(const run_t *R, const fnav_allan_result_t *res, siz
 static double tau_long_of(const run_t *R, const chan_t *ch);
 static int ar1_resolved(const run_t *R, const chan_t *ch);
 
-/* The p-quantile (0 <= p <= 1) of v[0..n-1], sorted ascending, by linear
- * interpolation between the order statistics at h = (n - 1) p (Hyndman and
- * Fan's definition 7, numpy's and R's default): n >= 2. */
-static double quantile_sorted(const double *v, size_t n, double p)
-{
-    const double h = (double)(n - 1u) * p;
-    const size_t j = (size_t)floor(h);
-    return j + 1u < n ? v[j] + (h - (double)j) * (v[j + 1u] - v[j]) : v[n - 1u];
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 /* The model simulated at R->nrefit samples through the estimator the
  * measured table came from (the streaming one, or --estimator exact's
  * record), into t's table (display units, t->scale 1).
@@ -1646,9 +1630,9 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
         ch->refitted = 1;
         for (q = 0; q < 3 && ch->rf_ok >= 2; q++) {
             double *w = v + (size_t)q * (size_t)R->refits;
-            qsort(w, (size_t)ch->rf_ok, sizeof *w, cmp_double);
-            ch->rf_ci[q][0] = quantile_sorted(w, (size_t)ch->rf_ok, 0.158655253931457);
-            ch->rf_ci[q][1] = quantile_sorted(w, (size_t)ch->rf_ok, 0.841344746068543);
+            qsort(w, (size_t)ch->rf_ok, sizeof *w, hx_cmp_double);
+            ch->rf_ci[q][0] = hx_quantile_sorted(w, ch->rf_ok, 0.158655253931457);
+            ch->rf_ci[q][1] = hx_quantile_sorted(w, ch->rf_ok, 0.841344746068543);
         }
     }
     free(t->x);

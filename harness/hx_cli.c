@@ -1569,6 +1569,21 @@ int hx_cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+double hx_quantile_sorted(const double *x, int n, double q)
+{
+    double h;
+    int j;
+    if (n < 1) {
+        return (double)NAN;
+    }
+    h = (double)(n - 1) * (q < 0.0 ? 0.0 : (q > 1.0 ? 1.0 : q));
+    j = (int)floor(h);
+    if (j >= n - 1) {
+        return x[n - 1];
+    }
+    return x[j] + (h - (double)j) * (x[j + 1] - x[j]);
+}
+
 double hx_median(double *v, int n)
 {
     if (n <= 0) {

@@ -188,6 +188,11 @@ int hx_cmp_double(const void *a, const void *b);
 
 /** Median of v[0..n-1] (sorts v in place); NaN when n <= 0. */
 double hx_median(double *v, int n);
+/** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's
+ *  default definition (numpy.percentile's "linear", Hyndman and Fan's
+ *  type 7): h = (n - 1) q, x[floor h] + (h - floor h)(x[floor h + 1] -
+ *  x[floor h]). NaN when n < 1. Shared by simgap's and allan's refits. */
+double hx_quantile_sorted(const double *x, int n, double q);
 
 /* ------------------------------------------------------------ plots */
 

@@ -289,7 +289,7 @@ typedef struct {
     int nrefit[SG_MAX_PAR];   /**< the number of twins' refits se[k] is the standard deviation of
                                    (sg_se_from_refits); 0: se[k] is not from refits */
     double ci_lo[SG_MAX_PAR], ci_hi[SG_MAX_PAR]; /**< the 16th and 84th percentiles of those refits
-                                   (sg_quantile_sorted), the 68 % of them in between; NaN with fewer
+                                   (hx_quantile_sorted), the 68 % of them in between; NaN with fewer
                                    than SG_CI_MIN_REFITS. Reporting only, as se */
     double lo[SG_MAX_PAR], hi[SG_MAX_PAR]; /**< the interval the fit searched the parameter in (its
                                    unit; lo = hi = 0: not searched within bounds): the thermal tau_s,
@@ -339,12 +339,6 @@ typedef struct {
  *  k < SG_MAX_TWINS, 7,836. A diagnosis draws from the seeds S ...
  *  S + SG_SEED_SPAN - 1 (mod 2^32) only. */
 #define SG_SEED_SPAN 12010u
-
-/** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's
- *  default definition (numpy.percentile's "linear", Hyndman and Fan's
- *  type 7): h = (n - 1) q, x[floor h] + (h - floor h)(x[floor h + 1] -
- *  x[floor h]). NaN when n < 1. */
-double sg_quantile_sorted(const double *x, int n, double q);
 
 /** Standard errors of the Allan fit's parameters from the twins' refits
  *  (a parametric bootstrap: docs/simgap.md, section 3): every parameter of

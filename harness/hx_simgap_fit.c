@@ -762,21 +762,6 @@ static int refit_value(const sg_chmodel_t *fits, const int *ok, int s, int id, i
     return isfinite(*v);
 }
 
-double sg_quantile_sorted(const double *x, int n, double q)
-{
-    double h;
-    int j;
-    if (n < 1) {
-        return (double)NAN;
-    }
-    h = (double)(n - 1) * (q < 0.0 ? 0.0 : (q > 1.0 ? 1.0 : q));
-    j = (int)floor(h);
-    if (j >= n - 1) {
-        return x[n - 1];
-    }
-    return x[j] + (h - (double)j) * (x[j + 1] - x[j]);
-}
-
 int sg_has_ci(const sg_effect_t *e, int k)
 {
     return isfinite(e->se[k]) && e->nrefit[k] >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k]);
@@ -818,8 +803,8 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
             e->nrefit[k] = c;
             if (c >= SG_CI_MIN_REFITS) {
                 qsort(x, (size_t)c, sizeof x[0], hx_cmp_double);
-                e->ci_lo[k] = sg_quantile_sorted(x, c, 0.16);
-                e->ci_hi[k] = sg_quantile_sorted(x, c, 0.84);
+                e->ci_lo[k] = hx_quantile_sorted(x, c, 0.16);
+                e->ci_hi[k] = hx_quantile_sorted(x, c, 0.84);
             }
         }
     }

@@ -2080,7 +2080,7 @@ static void test_se_from_refits(void **state)
     assert_true(isnan(m.e[1].se[0]));
 }
 
-/* The refits' percentiles (sg_quantile_sorted) are numpy's default
+/* The refits' percentiles (hx_quantile_sorted) are numpy's default
  * definition, linear interpolation between the order statistics; the
  * values from numpy.percentile (scripts/simgap_ci_ref.py). 16 values as
  * S = 16 twins' refits, the 8 simgap gives an interval from at the
@@ -2093,18 +2093,18 @@ static void test_refit_quantile(void **state)
     (void)state;
     qsort(x16, 16, sizeof x16[0], hx_cmp_double);
     qsort(x8, 8, sizeof x8[0], hx_cmp_double);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.0), 0.44, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.16), 0.47399999999999998, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.5), 0.52500000000000002, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.84), 0.64000000000000001, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 1.0), 0.95, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.0), 1.0, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.16), 1.6320000000000001, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.5), 3.25, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.84), 4.8799999999999999, 0.0, 1e-15);
-    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 1.0), 9.0, 0.0, 1e-15);
-    assert_true(sg_quantile_sorted(x1, 1, 0.16) == 2.5 && sg_quantile_sorted(x1, 1, 0.84) == 2.5);
-    assert_true(isnan(sg_quantile_sorted(x1, 0, 0.5)));
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x16, 16, 0.0), 0.44, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x16, 16, 0.16), 0.47399999999999998, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x16, 16, 0.5), 0.52500000000000002, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x16, 16, 0.84), 0.64000000000000001, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x16, 16, 1.0), 0.95, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x8, 8, 0.0), 1.0, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x8, 8, 0.16), 1.6320000000000001, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x8, 8, 0.5), 3.25, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x8, 8, 0.84), 4.8799999999999999, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(hx_quantile_sorted(x8, 8, 1.0), 9.0, 0.0, 1e-15);
+    assert_true(hx_quantile_sorted(x1, 1, 0.16) == 2.5 && hx_quantile_sorted(x1, 1, 0.84) == 2.5);
+    assert_true(isnan(hx_quantile_sorted(x1, 0, 0.5)));
 }
 
 /* The refits' 68 % interval (16th and 84th percentiles) beside their sd:
