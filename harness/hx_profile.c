@@ -115,14 +115,6 @@ static int key_suggest(const char *u)
     return best <= limit ? at : -1;
 }
 
-/* text as it may be quoted in a message: at most n-1 bytes, a control
- * character (hx_control_len: ASCII's, and C1's in UTF-8) as '?' (a key
- * is the file's text, printed to a terminal) */
-static void quote_text(char *dst, size_t n, const char *text)
-{
-    (void)hx_line_str(dst, n, text);
-}
-
 /* Index of the first control character of a name (hx_control_len), or
  * -1; a name goes to stdout (sim's effect lines, replay's summary) */
 static long name_control(const char *s)
@@ -415,7 +407,7 @@ int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t
                  * without a word: gyro_nosie left the default unseen */
                 const int meant = key_suggest(key);
                 char q[48];
-                quote_text(q, sizeof q, key);
+                (void)hx_line_str(q, sizeof q, key); /* the file's text, a control character as '?' */
                 if (nunknown < UNKNOWN_KEPT) {
                     unknown[nunknown].line = lineno;
                     unknown[nunknown].meant = meant;
