@@ -61,8 +61,8 @@ static const hx_opt_t k_opts[] = {
     { "--seed", "N", "random seed of the simulations (default 1)", 0 },
     { "--refits", "N", "interval of the corrected fit: simulate the fitted model N times (N >= 2; default 0, "
                        "off) at the record's length (or --sim-samples; also with --no-sim), refit each the same "
-                       "way, and print the central 68.3 % (fixed, not --conf) of sigma_v, tau and sigma_bias (a "
-                       "parametric bootstrap; channels whose AR(1) part is identified)", 0 },
+                       "way, and print the central --conf share (default 68.3 %) of sigma_v, tau and sigma_bias "
+                       "(a parametric bootstrap; channels whose AR(1) part is identified)", 0 },
     { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's "
                      "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
@@ -133,7 +133,7 @@ typedef struct {
     int refitted;        /* 1: its refits ran to the end (0: not eligible, none asked, interrupted, or out of memory) */
     int rf_oom;          /* 1: its refits stopped out of memory (said; exit 1) */
     int rf_ok, rf_fit_failed, rf_unresolved; /* refits fitted with their AR(1) identified; fit failed; AR(1) not */
-    double rf_ci[3][2];  /* sigma_v, tau (samples), sigma_bias: 15.87 and 84.13 percentiles (NAN: < 2 ok) */
+    double rf_ci[3][2];  /* sigma_v, tau (samples), sigma_bias: the (1 -+ conf) / 2 percentiles (NAN: < 2 ok) */
 } chan_t;
 
 typedef struct {
@@ -1571,8 +1571,9 @@ static unsigned long refit_seed(unsigned long seed, int i, long k)
  * --max-tau-frac of the simulated record) and its AR(1) part tested as
  * the measured one's (ar1_identified_in()); a refit whose fit fails or
  * whose AR(1) part is not identified is counted, not used. The interval
- * is the 15.87 and 84.13 percentiles (the central 68.27 %, one sigma) of
- * the refits that are used, none when fewer than 2.
+ * is the central --conf share of the refits that are used (the 15.87 and
+ * 84.13 percentiles at the default 68.27 %, one sigma), none when fewer
+ * than 2.
  * @return 0; -3 interrupted (the channel's refitted stays 0); -1 out of
  *         memory (said; rf_oom set, refitted 0) */
 static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fit_extra, hx_progress_t *pr,
@@ -1631,8 +1632,10 @@ static int refit_channel(run_t *R, chan_t *ch, int i, unsigned long seed, int fi
         for (q = 0; q < 3 && ch->rf_ok >= 2; q++) {
             double *w = v + (size_t)q * (size_t)R->refits;
             qsort(w, (size_t)ch->rf_ok, sizeof *w, hx_cmp_double);
-            ch->rf_ci[q][0] = hx_quantile_sorted(w, ch->rf_ok, 0.158655253931457);
-            ch->rf_ci[q][1] = hx_quantile_sorted(w, ch->rf_ok, 0.841344746068543);
+            /* the central --conf share: the (1 -+ conf) / 2 percentiles
+             * (15.87 and 84.13 at the default, one sigma) */
+            ch->rf_ci[q][0] = hx_quantile_sorted(w, ch->rf_ok, 0.5 * (1.0 - R->conf));
+            ch->rf_ci[q][1] = hx_quantile_sorted(w, ch->rf_ok, 0.5 * (1.0 + R->conf));
         }
     }
     free(t->x);
@@ -1845,10 +1848,10 @@ static void print_refits(const run_t *R)
     if (R->refits <= 0 || R->interrupted[0] != '\0') {
         return; /* off, or cut short by a signal (said in the warning) */
     }
-    printf("Corrected fit, 68 %% interval of %ld refits of the fitted model (parametric bootstrap: the 15.87 and "
-           "84.13\npercentiles of the fits of %lu-sample simulations of it; the spread the fitted model gives at "
+    printf("Corrected fit, %.3g %% interval of %ld refits of the fitted model (parametric bootstrap: the %.4g and "
+           "%.4g\npercentiles of the fits of %lu-sample simulations of it; the spread the fitted model gives at "
            "this length,\nnot a check of its form; docs/allan.md):\n",
-           R->refits, (unsigned long)R->nrefit);
+           100.0 * R->conf, R->refits, 50.0 * (1.0 - R->conf), 50.0 * (1.0 + R->conf), (unsigned long)R->nrefit);
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
         const int failed = ch->rf_fit_failed + ch->rf_unresolved;
@@ -2176,9 +2179,10 @@ static int write_json(const run_t *R, const char *path)
             cJSON_AddStringToObject(rf, "error", "out of memory");
         }
         if (ch->refitted) {
-            /* --refits: the parametric bootstrap's counts and 68 % intervals
-             * (null: fewer than 2 refits usable) */
-            static const char *const keys[3] = { "sigma_v_ci68", "tau_samples_ci68", "sigma_bias_ci68" };
+            /* --refits: the parametric bootstrap's counts and intervals at
+             * --conf (the root's "confidence"; null: fewer than 2 refits
+             * usable) */
+            static const char *const keys[3] = { "sigma_v_ci", "tau_samples_ci", "sigma_bias_ci" };
             cJSON *rf = cJSON_AddObjectToObject(p, "refits");
             int q;
             hx_json_num(rf, "requested", (double)R->refits);

@@ -1431,7 +1431,8 @@ for s in 0 1 2 3 4 5 6 7; do
         >"$T/rf$s.out" 2>"$T/rf$s.err" && rf_ok=$((rf_ok + 1))
 done
 [ "$rf_ok" -eq 8 ] && pass "--refits 20 on 8 white + AR(1) series: exit 0" || fail "--refits: $rf_ok of 8 ran: $(cat "$T/rf0.err")"
-grep -q "^Corrected fit, 68 % interval of 20 refits of the fitted model (parametric bootstrap" "$T/rf0.out" &&
+grep -q "^Corrected fit, 68.3 % interval of 20 refits of the fitted model (parametric bootstrap: the 15.87 and 84.13$" \
+    "$T/rf0.out" &&
     grep -q "^series u      | sigma_v .* to .*, tau .* to .* samples, sigma_bias .* to .* (20 of 20 refits)$" "$T/rf0.out" &&
     pass "--refits: the block under the parameter table, one line per channel" ||
     fail "--refits: the text block: $(grep -A4 '^Corrected fit' "$T/rf0.out")"
@@ -1439,8 +1440,8 @@ grep -q "^Corrected fit, 68 % interval of 20 refits of the fitted model (paramet
 # percentile interval need not hold its own estimate: it does here), and the counts are those of the refits run
 json "$T/rf0.json" '[c for c in [j["channels"][0]["corrected"]] if c["refits"] == {"requested": 20, "samples": 50000,
     "ok": 20, "failed": 0, "fit_failed": 0, "ar1_not_identified": 0} and all(
-    len(c[k + "_ci68"]) == 2 and all(abs(x) < float("inf") for x in c[k + "_ci68"])
-    and c[k + "_ci68"][0] <= c[k] <= c[k + "_ci68"][1] for k in ("sigma_v", "tau_samples", "sigma_bias"))]' &&
+    len(c[k + "_ci"]) == 2 and all(abs(x) < float("inf") for x in c[k + "_ci"])
+    and c[k + "_ci"][0] <= c[k] <= c[k + "_ci"][1] for k in ("sigma_v", "tau_samples", "sigma_bias"))]' &&
     pass "--refits, one draw: finite intervals about the fitted values, 20 of 20 refits counted" ||
     fail "--refits, one draw: $(head -c 1500 "$T/rf0.json" | tr -d '\n')"
 # independent figures from the 8 series: (1) the true sigma_v, tau and sigma_bias each lie in at least 3 of the 8
@@ -1455,8 +1456,8 @@ json "$T/rf0.json" '[c for c in [j["channels"][0]["corrected"]] if c["refits"] =
 cs = [json.load(open("%s/rf%d.json" % (sys.argv[1], s)))["channels"][0]["corrected"] for s in range(8)]
 bad = []
 for k, truth in (("sigma_v", 0.2), ("tau_samples", 100.0), ("sigma_bias", 0.5)):
-    cover = sum(c[k + "_ci68"][0] <= truth <= c[k + "_ci68"][1] for c in cs)
-    ratio = statistics.median(c[k + "_ci68"][1] - c[k + "_ci68"][0] for c in cs) / (2 * statistics.stdev(c[k] for c in cs))
+    cover = sum(c[k + "_ci"][0] <= truth <= c[k + "_ci"][1] for c in cs)
+    ratio = statistics.median(c[k + "_ci"][1] - c[k + "_ci"][0] for c in cs) / (2 * statistics.stdev(c[k] for c in cs))
     print("  %s: truth in %d of 8 intervals, median width / independent spread %.2f" % (k, cover, ratio))
     if cover < 3 or not 1 / 3 < ratio < 3:
         bad.append(k)
@@ -1470,8 +1471,8 @@ expect_err "--refits 'abc' is not a whole number" "--refits abc: the error names
 expect_exit 0 "no --refits" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --json "$T/rfdef.json"
 mv "$T/out" "$T/rfdef.out"
 grep -q "refits" "$T/rfdef.out" && fail "no --refits: a refits block printed" || pass "no --refits: no refits block"
-json "$T/rfdef.json" 'all(k not in j["channels"][0]["corrected"] for k in ("refits", "sigma_v_ci68", "tau_samples_ci68",
-    "sigma_bias_ci68"))' && pass "no --refits: no refits keys in the JSON" || fail "no --refits: refits keys in the JSON"
+json "$T/rfdef.json" 'all(k not in j["channels"][0]["corrected"] for k in ("refits", "sigma_v_ci", "tau_samples_ci",
+    "sigma_bias_ci"))' && pass "no --refits: no refits keys in the JSON" || fail "no --refits: refits keys in the JSON"
 expect_exit 0 "--refits 0" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --refits 0
 cmp -s "$T/out" "$T/rfdef.out" && pass "--refits 0: the default's text" || fail "--refits 0 differs from the default"
 # Ctrl-C in the refits (the streaming estimator, simulations of 2e9 samples: minutes): as in the other slow stages,
@@ -1487,7 +1488,7 @@ json "$T/rfint.json" '(j["complete"] is False and "SIGINT in the refits: no inte
     and "refits" not in j["channels"][0]["corrected"] and j["channels"][0]["corrected"].get("tau_samples") is not None)' &&
     pass "SIGINT in the refits: the JSON written without an interval" ||
     fail "SIGINT in the refits: the JSON: $(head -c 600 "$T/rfint.json")"
-grep -q "^Corrected fit, 68 %" "$T/rfint.out" && fail "SIGINT in the refits: an interval block printed" ||
+grep -q "^Corrected fit, " "$T/rfint.out" && fail "SIGINT in the refits: an interval block printed" ||
     pass "SIGINT in the refits: no interval block"
 "$H" allan --help >"$T/out" 2>&1
 expect_out "--refits N .*parametric bootstrap" "allan --help: --refits said"
@@ -1502,7 +1503,7 @@ done
 p = 0.158655253931457
 vals = []
 for s in (1, 2, 3):
-    ci = json.load(open("%s/rfs%d.json" % (sys.argv[1], s)))["channels"][0]["corrected"].get("tau_samples_ci68")
+    ci = json.load(open("%s/rfs%d.json" % (sys.argv[1], s)))["channels"][0]["corrected"].get("tau_samples_ci")
     if ci is None:
         sys.exit("--seed %d: no interval (fewer than 2 refits used)" % s)
     lo, hi = ci
@@ -1512,6 +1513,26 @@ shared = sum(abs(x - y) <= 1e-9 * abs(x) for i, x in enumerate(vals) for y in va
 print("%d of 15 pairs of the six refits equal" % shared)
 sys.exit(0 if shared == 0 else 1)' "$T" >"$T/rfs.txt" 2>&1 &&
     pass "--refits: --seed 1, 2 and 3 share no refit" || fail "--refits: neighbouring seeds share refits: $(cat "$T/rfs.txt")"
+# --conf sets the refits' share as the ADEV intervals' (it was fixed at 68.3 %): the same two refits (--seed 1) at
+# --conf 0.95 give the 2.5 and 97.5 percentiles, lo = a + 0.025 (b - a), of the a < b the default's interval gives
+expect_exit 0 "--refits 2 --conf 0.95" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --refits 2 --seed 1 \
+    --conf 0.95 --json "$T/rfc95.json"
+expect_out "^Corrected fit, 95 % interval of 2 refits of the fitted model (parametric bootstrap: the 2.5 and 97.5$" \
+    "--refits --conf 0.95: the block names its share and percentiles"
+"$PY" -c 'import json, sys
+p = 0.158655253931457
+c68 = json.load(open("%s/rfs1.json" % sys.argv[1]))["channels"][0]["corrected"]
+c95 = json.load(open("%s/rfc95.json" % sys.argv[1]))["channels"][0]["corrected"]
+for k in ("sigma_v", "tau_samples", "sigma_bias"):
+    lo, hi = c68[k + "_ci"]
+    d = (hi - lo) / (1.0 - 2.0 * p)
+    a, b = lo - p * d, hi + p * d
+    want = (a + 0.025 * (b - a), b - 0.025 * (b - a))
+    got = c95[k + "_ci"]
+    if any(abs(g - w) > 1e-9 * abs(w) for g, w in zip(got, want)):
+        sys.exit("%s: %r at --conf 0.95, want %r" % (k, got, want))' "$T" >"$T/rfc.txt" 2>&1 &&
+    pass "--refits --conf 0.95: the 2.5 and 97.5 percentiles of the same refits" ||
+    fail "--refits --conf 0.95: $(cat "$T/rfc.txt")"
 # out of memory in the refits (--estimator exact keeps each simulated record; ulimit -v): said, that channel n/a,
 # the JSON says it, exit 1; the tables and the identification printed (a sanitizer build cannot start under the
 # limit: then a note)
