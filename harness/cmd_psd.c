@@ -906,9 +906,9 @@ int hx_cmd_psd(int argc, char **argv)
         if (irregular > 0) {
             char what[300];
             hx_irregular_text(what, sizeof what, repeats, gaps, longest_gap_s, missing, (double)log.n);
-            hx_warn(CMD, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s: Welch assumes uniform "
+            hx_warn(CMD, "%s: %ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s: Welch assumes uniform "
                          "sampling%s",
-                    irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, what, hx_gaps_joined(gaps));
+                    a.pos[0], irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, what, hx_gaps_joined(gaps));
         }
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,
@@ -999,8 +999,8 @@ int hx_cmd_psd(int argc, char **argv)
                          : "");
             exit_code = HX_EXIT_DATA;
         } else if (none[0] || none[1]) {
-            hx_warn(CMD, "no %s axis has power once the DC is treated: the answer comes from the %s alone",
-                    none[0] ? "accelerometer" : "gyroscope", none[0] ? "gyroscopes" : "accelerometers");
+            hx_warn(CMD, "%s: no %s axis has power once the DC is treated: the answer comes from the %s alone",
+                    a.pos[0], none[0] ? "accelerometer" : "gyroscope", none[0] ? "gyroscopes" : "accelerometers");
         }
     }
     bw_max = widest_band(&res);
@@ -1011,29 +1011,30 @@ int hx_cmd_psd(int argc, char **argv)
          * at the top of what the log can show (a static log: white sensor
          * noise to the Nyquist frequency; the answer is then the log's rate by
          * construction, not a property of the motion) */
-        hx_warn(CMD, "%g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
+        hx_warn(CMD, "%s: %g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
                      "not fall off inside this log's band (white sensor noise does this, e.g. a static log, which "
                      "measures the sensor, not motion), so the log cannot show where the band ends; read %.*f Hz as "
                      "a lower bound set by the log's rate, not a measured requirement",
-                100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, fs_decimals(&bc), res.overall_fs);
+                a.pos[0], 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, fs_decimals(&bc),
+                res.overall_fs);
     }
     if (above_rate && bw_max < NYQ_FRAC * 0.5 * rate) {
         /* the rounding step alone (--round above the rate, or a low-rate
          * log): the band itself ends well inside the log's (this said it was
          * "near the Nyquist frequency" for a 115 Hz band of a 1000 Hz log) */
-        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
+        hx_warn(CMD, "%s: the answer (%.*f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
                      "multiples of %g Hz: %g %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
                      "and 2 x that is %.1f Hz (--round 0 gives it)",
-                fs_decimals(&bc), res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
+                a.pos[0], fs_decimals(&bc), res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
                 2.0 * bw_max);
     } else if (above_rate) {
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */
-        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz): %g %% of the power reaches "
+        hx_warn(CMD, "%s: the answer (%.*f Hz) is above the log's own rate (%.4g Hz): %g %% of the power reaches "
                      "%.1f Hz, near the Nyquist frequency %.4g Hz, so this log cannot show where the band ends; "
                      "read it as 'at least %.4g Hz' (or give --round 0)",
-                fs_decimals(&bc), res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);
+                a.pos[0], fs_decimals(&bc), res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);
     }
 
     memset(have, 0, sizeof have);
@@ -1182,13 +1183,13 @@ int hx_cmd_psd(int argc, char **argv)
             const size_t two = (size_t)spec_nfft + (size_t)spec_nfft / 2u;
             const int spec = log.n >= two;
             if (log.n < (size_t)spec_nfft) {
-                hx_warn(CMD, "fewer samples (%zu) than one spectrogram segment (--spec-nfft %ld): spectrogram.png not "
-                             "drawn",
-                        log.n, spec_nfft);
-            } else if (!spec) {
-                hx_warn(CMD, "one spectrogram segment (%zu samples, --spec-nfft %ld needs %zu for two): spectrogram.png "
+                hx_warn(CMD, "%s: fewer samples (%zu) than one spectrogram segment (--spec-nfft %ld): spectrogram.png "
                              "not drawn",
-                        log.n, spec_nfft, two);
+                        a.pos[0], log.n, spec_nfft);
+            } else if (!spec) {
+                hx_warn(CMD, "%s: one spectrogram segment (%zu samples, --spec-nfft %ld needs %zu for two): "
+                             "spectrogram.png not drawn",
+                        a.pos[0], log.n, spec_nfft, two);
             }
             /* the input's name goes into the titles as a gnuplot string (a
              * bare quote in it would end the string: no plot) */

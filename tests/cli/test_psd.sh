@@ -380,6 +380,7 @@ done
 # limit it)" without a word, as it is the log's rate by construction
 expect_exit 0 "static log at 100 Hz" "$H" psd "$T/static.csv" --json "$T/s100.json"
 expect_err "of the Nyquist frequency 50 Hz: the power does not fall off" "a band at the Nyquist frequency is flagged below the log's rate"
+expect_err "^harness psd: warning: $T/static.csv: 95 % of the power reaches" "the band-at-Nyquist warning names the log"
 expect_out "accelerometers and gyroscopes alike" "a tie between the groups is not called the accelerometers'"
 expect_out "DC: each segment's mean removed (a high-pass near f_s/nfft = 1.56 Hz" "the output states its DC treatment"
 expect_out "band from 0 Hz holding 95 % of the total power" "the output states its criterion"
@@ -397,6 +398,10 @@ expect_out_re "^  lowest usable sampling frequency: 100 Hz \(accelerometers and 
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.1f", (NR - 2) / 10.0); print }' OFS=, "$T/static.csv" >"$T/static10.csv"
 expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.json"
 expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
+# each warning of the log's data names the log, as allan's do (these four did not: 'psd: warning: 95 % of the power
+# reaches ...'; the mutation sweep of stop 93)
+expect_err "^harness psd: warning: $T/static10.csv: the answer (50 Hz) is above the log's own rate" \
+    "the answer-above-the-rate warning names the log"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
     pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
 # above the log's rate the bound is the rate itself (the warning's "read it as 'at least 10 Hz'"), not the answer
@@ -459,6 +464,7 @@ expect_out_re "398\.[0-9]+ Hz" "the rate is read from the spans of the stamps"
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "millisecond stamps with lost samples" "$H" psd "$T/msgap.csv"
 expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
+expect_err "^harness psd: warning: $T/msgap.csv: 30 of 2969 intervals differ" "the irregular-intervals warning names the log"
 # 100 Hz stamps printed to 10 ms (exact intervals: the period is one resolution) with 30 single samples lost: each
 # 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, which must not leave them without a warning
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/cs.csv"
