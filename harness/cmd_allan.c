@@ -2359,32 +2359,38 @@ static int write_plot(const run_t *R, const char *path)
  * character, hx_control_len: the profile reader refuses one). */
 static int name_printable(const char *s)
 {
-    for (; *s != '\0'; s++) {
-        if (hx_control_len(s) > 0u) {
+    while (*s != '\0') {
+        int ctl;
+        s += hx_text_char(s, &ctl);
+        if (ctl) {
             return 0;
         }
     }
     return 1;
 }
 
+/* The file name of path up to its first '.', as one line of the
+ * profile: a control character (or a byte that is not UTF-8) one '_',
+ * cut to fit out at a character's start (never inside a UTF-8 letter) */
 static void base_name(const char *path, char *out, size_t n)
 {
-    const char *s = strrchr(path, '/');
-    char *dot, *c;
-    snprintf(out, n, "%s", s != NULL ? s + 1 : path);
-    dot = strchr(out, '.');
-    if (dot != NULL) {
-        *dot = '\0';
-    }
-    for (c = out; *c != '\0'; c++) {
-        const size_t k = hx_control_len(c);
-        if (k > 0u) {
-            *c = '_'; /* the name is one line of the profile (a C1 one's two bytes: two '_') */
-            if (k == 2u) {
-                *++c = '_'; /* not the lead byte of a character after an ASCII one ('\001' U+00E9 kept its U+00E9) */
-            }
+    const char *c = strrchr(path, '/');
+    size_t o = 0;
+    for (c = c != NULL ? c + 1 : path; *c != '\0' && *c != '.';) {
+        int ctl;
+        const size_t k = hx_text_char(c, &ctl);
+        if (o + (ctl ? 1u : k) >= n) {
+            break;
         }
+        if (ctl) {
+            out[o++] = '_'; /* one '_' for the character, of one byte or two */
+        } else {
+            memcpy(out + o, c, k); /* a UTF-8 letter whole ('\001' U+00E9 keeps its U+00E9) */
+            o += k;
+        }
+        c += k;
     }
+    out[o] = '\0';
 }
 
 /* The still part of a static log that moves in places (a few windows: it
@@ -2740,7 +2746,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     double tau_long_s;
     double q[6], kk[6], pv[6], pt[6], ps[6], rms[6], fallback[6];
     memset(&p, 0, sizeof p);
-    snprintf(p.name, sizeof p.name, "%s", name);
+    (void)hx_line_str(p.name, sizeof p.name, name); /* cut at a character's start, not inside a UTF-8 letter */
     p.rate_hz = (fnav_real_t)R->rate_hz;
     for (i = 0; i < 6; i++) {
         const chan_t *ch = &R->ch[i];
@@ -2990,7 +2996,7 @@ int hx_cmd_allan(int argc, char **argv)
     if (hx_arg(&a, "--name") != NULL && !name_printable(hx_arg(&a, "--name"))) {
         /* the profile's "name = ..." line: a line break in it wrote keys of
          * its own (a second rate_hz), and the profile could not be read */
-        hx_error(CMD, "--name must be printable text on one line (no control characters)");
+        hx_error(CMD, "--name must be printable text on one line (no control characters; UTF-8)");
         return HX_EXIT_USAGE;
     }
     if (hx_arg(&a, "--unit") != NULL &&

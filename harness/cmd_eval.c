@@ -387,16 +387,21 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
 static const char *md_cell(const char *name, char *out, size_t size)
 {
     size_t o = 0;
-    for (; *name != '\0' && o + 2 < size; name++) {
-        const unsigned char c = (unsigned char)*name;
-        if (c == '|') {
+    while (*name != '\0') {
+        int ctl;
+        const size_t k = hx_text_char(name, &ctl);
+        if (*name == '|' && o + 2 < size) {
             out[o++] = '\\';
             out[o++] = '|';
+        } else if (ctl && o + 1 < size) {
+            out[o++] = '?';
+        } else if (!ctl && *name != '|' && o + k < size) {
+            memcpy(out + o, name, k); /* a character whole, not cut */
+            o += k;
         } else {
-            const size_t k = hx_control_len(name);
-            out[o++] = k > 0u ? '?' : (char)c;
-            name += k > 1u ? k - 1u : 0u; /* the loop steps past the last byte */
+            break;
         }
+        name += k;
     }
     out[o] = '\0';
     return out;

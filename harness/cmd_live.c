@@ -861,8 +861,8 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             memcpy(info.axes, clean, sizeof info.axes);
             if (ctl && !L->told_name) {
                 L->told_name = 1;
-                warn_limited(L, "the INFO frame's sensor name or axis note holds control characters (shown and "
-                                "recorded as '?')");
+                warn_limited(L, "the INFO frame's sensor name or axis note holds control characters or bytes that are "
+                                "not UTF-8 (shown and recorded as '?')");
             }
             if (L->have_info && L->samples > 0u && info.rate_hz != L->info.rate_hz && !L->rate_changed) {
                 char msg[200];

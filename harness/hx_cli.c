@@ -367,9 +367,16 @@ static void put_msg(const char *fmt, va_list ap)
      * a write(2) per byte, which a concurrent writer's line (a parallel
      * job's, into the same log) could split */
     for (s = p, o = p; *s != '\0';) {
-        const size_t k = s[0] == '\n' && s[1] == '\0' ? 0u : hx_control_len(s); /* the line's own end */
-        *o++ = k > 0u ? '?' : *s;
-        s += k > 0u ? k : 1u;
+        int ctl;
+        size_t k = hx_text_char(s, &ctl);
+        if (ctl && !(s[0] == '\n' && s[1] == '\0')) { /* the line's own end stays */
+            *o++ = '?';
+            s += k;
+        } else {
+            while (k-- > 0u) {
+                *o++ = *s++;
+            }
+        }
     }
     *o = '\0';
     (void)fputs(p, stderr);
@@ -1280,13 +1287,36 @@ const char *hx_gp_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
+size_t hx_text_char(const char *s, int *control)
+{
+    const unsigned char *u = (const unsigned char *)s;
+    size_t n;
+    *control = 0;
+    if (u[0] == 0u) {
+        return 0u; /* the terminating NUL is not a character */
+    }
+    if (u[0] < 0x20u || u[0] == 0x7fu) {
+        *control = 1;
+        return 1u;
+    }
+    n = utf8_len(u);
+    if (n == 0u) {
+        /* a byte of no well-formed character (Latin-1 text, a cut or
+         * corrupted one): a raw 0x9B is CSI to a terminal of 8-bit
+         * controls (the Linux console out of UTF-8 mode), and the bytes
+         * after it may not be the text they seem */
+        *control = 1;
+        return 1u;
+    }
+    *control = n == 2u && u[0] == 0xc2u && u[1] <= 0x9fu; /* C1 in UTF-8, U+0080-U+009F */
+    return n;
+}
+
 size_t hx_control_len(const char *s)
 {
-    const unsigned char c = (unsigned char)s[0];
-    if (c < 0x20u || c == 0x7fu) {
-        return c == 0u ? 0u : 1u; /* the terminating NUL is not a character */
-    }
-    return c == 0xc2u && (unsigned char)s[1] >= 0x80u && (unsigned char)s[1] <= 0x9fu ? 2u : 0u;
+    int ctl;
+    const size_t n = hx_text_char(s, &ctl);
+    return ctl ? n : 0u;
 }
 
 const char *hx_line_str(char *buf, size_t size, const char *s)
@@ -1295,10 +1325,19 @@ const char *hx_line_str(char *buf, size_t size, const char *s)
     if (size == 0) {
         return buf;
     }
-    while (*s != '\0' && o + 1 < size) {
-        const size_t k = hx_control_len(s);
-        buf[o++] = k > 0u ? '?' : *s;
-        s += k > 0u ? k : 1u;
+    while (*s != '\0') {
+        int ctl;
+        const size_t k = hx_text_char(s, &ctl);
+        if (o + (ctl ? 1u : k) >= size) {
+            break; /* cut at a character's start */
+        }
+        if (ctl) {
+            buf[o++] = '?';
+        } else {
+            memcpy(buf + o, s, k);
+            o += k;
+        }
+        s += k;
     }
     buf[o] = '\0';
     return buf;

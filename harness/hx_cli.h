@@ -335,11 +335,19 @@ void hx_eprintf(const char *fmt, ...)
 #endif
     ;
 
-/** The length in bytes of the control character s starts with, 0 when it
- *  starts with none: 1 for an ASCII one (below 0x20, and DEL), 2 for a C1
- *  one in UTF-8 (U+0080-U+009F, C2 80-9F: U+009B is a terminal's CSI, as
- *  ESC [ is). The one rule by which the text of a file or of a sender is
- *  made safe to print (hx_printable, hx_line_str, a profile's keys). */
+/** The character of text s starts with: its length in bytes (0 at the
+ *  end), and in *control whether it is shown as '?': an ASCII control
+ *  (below 0x20, and DEL; 1 byte), a C1 one in UTF-8 (U+0080-U+009F, C2
+ *  80-9F: U+009B is a terminal's CSI, as ESC [ is; 2 bytes), or a byte of
+ *  no well-formed UTF-8 character (1 byte: a raw 0x9B is CSI to a
+ *  terminal of 8-bit controls). Any other character, of 1 to 4 bytes, is
+ *  text. The one rule by which the text of a file or of a sender is made
+ *  safe to print (hx_printable, hx_line_str, the messages, a profile's
+ *  keys and name); a loop over text steps by the length it returns. */
+size_t hx_text_char(const char *s, int *control);
+
+/** The length in bytes of the character s starts with if hx_text_char
+ *  shows it as '?', else 0. */
 size_t hx_control_len(const char *s);
 
 /** `s` as one line of text, each control character (a line break, a tab;

@@ -245,13 +245,16 @@ int hx_printable(char *s)
     int n = 0;
     char *o = s;
     while (*s != '\0') {
-        const size_t k = hx_control_len(s);
-        if (k > 0u) {
+        int ctl;
+        size_t k = hx_text_char(s, &ctl);
+        if (ctl) {
             *o++ = '?'; /* one '?' for the character, of one byte or two */
             s += k;
             n++;
         } else {
-            *o++ = *s++;
+            while (k-- > 0u) {
+                *o++ = *s++;
+            }
         }
     }
     *o = '\0';
@@ -2370,7 +2373,7 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
     }
     snprintf(m->sensor, sizeof m->sensor, "Xsens %s", r->mt.product[0] != '\0' ? r->mt.product : "(MT Manager)");
     if (hx_printable(m->sensor) > 0) { /* an escape in the ProductCode reached the terminal, as a .bin's text */
-        add_warn(r, "%s: the ProductCode holds control characters (read as '?')", r->path);
+        add_warn(r, "%s: the ProductCode holds control characters or bytes that are not UTF-8 (read as '?')", r->path);
     }
     copy_str(m->axes, sizeof m->axes, "sensor axes");
     return 0;
@@ -3154,8 +3157,8 @@ static int setup_bin(hx_reader_t *r)
          * escape sequence reach the terminal */
         const int ctl = hx_printable(r->meta.sensor) + hx_printable(r->meta.source) + hx_printable(r->meta.axes);
         if (ctl > 0) {
-            add_warn(r, "%s: the header's text holds %d control character%s (read as '?')", r->path, ctl,
-                     ctl == 1 ? "" : "s");
+            add_warn(r, "%s: the header's text holds %d control character%s or byte%s that are not UTF-8 (read as '?')",
+                     r->path, ctl, ctl == 1 ? "" : "s", ctl == 1 ? "" : "s");
         }
     }
     return 0;

@@ -115,17 +115,30 @@ static int key_suggest(const char *u)
     return best <= limit ? at : -1;
 }
 
-/* Index of the first control character of a name (hx_control_len), or
+/* Index of the first character of a name shown as '?' (hx_text_char: a
+ * control character, or a byte that is not UTF-8 text), or
  * -1; a name goes to stdout (sim's effect lines, replay's summary) */
 static long name_control(const char *s)
 {
-    long i;
-    for (i = 0; s[i] != '\0'; i++) {
-        if (hx_control_len(s + i) > 0u) {
+    long i = 0;
+    while (s[i] != '\0') {
+        int ctl;
+        const size_t k = hx_text_char(s + i, &ctl);
+        if (ctl) {
             return i;
         }
+        i += (long)k;
     }
     return -1;
+}
+
+/* What the character name_control() found at s is, for its message */
+static const char *name_bad_what(const char *s)
+{
+    const unsigned char c = (unsigned char)s[0];
+    return c < 0x80u || (c == 0xc2u && (unsigned char)s[1] >= 0x80u && (unsigned char)s[1] <= 0x9fu)
+               ? "a control character"
+               : "a byte that is not UTF-8 text";
 }
 
 static char *trim(char *s)
@@ -304,13 +317,12 @@ int hx_profile_read_warn(const char *path, fnav_profile_t *p, char *warn, size_t
             const long bad = name_control(val);
             if (bad >= 0) {
                 /* an ESC in the name went to the terminal as is */
-                snprintf(err, err_size, "%s:%d: name has a control character (byte %ld, 0x%02x): a name is printable "
-                                        "text",
-                         path, lineno, bad + 1, (unsigned)(unsigned char)val[bad]);
+                snprintf(err, err_size, "%s:%d: name has %s (byte %ld, 0x%02x): a name is printable text", path,
+                         lineno, name_bad_what(val + bad), bad + 1, (unsigned)(unsigned char)val[bad]);
                 fclose(f);
                 return -1;
             }
-            snprintf(p->name, sizeof p->name, "%s", val);
+            (void)hx_line_str(p->name, sizeof p->name, val); /* cut before a UTF-8 letter, not inside one */
             have_name = 1;
         } else if (strcmp(key, "rate_hz") == 0) {
             const char *num, *end;
@@ -495,8 +507,8 @@ int hx_profile_check(const fnav_profile_t *p, char *err, size_t err_size)
         }
     }
     if (bad >= 0) {
-        snprintf(err, err_size, "name has a control character (byte %ld, 0x%02x): a name is printable text", bad + 1,
-                 (unsigned)(unsigned char)p->name[bad]);
+        snprintf(err, err_size, "name has %s (byte %ld, 0x%02x): a name is printable text", name_bad_what(p->name + bad),
+                 bad + 1, (unsigned)(unsigned char)p->name[bad]);
         return -1;
     }
     return 0;

@@ -16,6 +16,7 @@
 #include "fnav_testdata.h"
 #include "fuzz/fuzz_log_byte.h"
 #include "hx_bin.h"
+#include "hx_cli.h"
 #include "hx_log.h"
 #include "hx_names.h"
 
@@ -5393,6 +5394,44 @@ static void test_load_progress(void **state)
     unlink(p);
 }
 
+/* The one rule for text shown from a file (hx_text_char): an ASCII
+ * control, a C1 control in UTF-8 and a byte of no well-formed UTF-8
+ * character are one '?' each; a UTF-8 letter of 2 to 4 bytes is kept
+ * whole. Before, a raw 0x9B (CSI to a terminal of 8-bit controls) or a
+ * Latin-1 byte passed as it was (a CLI mutation sweep's messages). */
+static void test_printable_utf8(void **state)
+{
+    static const struct {
+        const char *in, *out;
+        int n;
+    } k_case[] = {
+        { "a\x1b]0;X\x07" "b", "a?]0;X?b", 2 },      /* ASCII controls */
+        { "0\xc2\x9b" "2J", "0?2J", 1 },              /* U+009B in UTF-8 */
+        { "0\x9b" "2J", "0?2J", 1 },                  /* a raw 0x9B */
+        { "caf\xe9", "caf?", 1 },                    /* Latin-1 */
+        { "caf\xc3\xa9", "caf\xc3\xa9", 0 },          /* UTF-8 e acute */
+        { "\xf0\x9f\x98\x80!", "\xf0\x9f\x98\x80!", 0 }, /* 4 bytes, U+1F600 */
+        { "\xc0\xaf", "??", 2 },                     /* an overlong '/' */
+        { "\xed\xa0\x80", "???", 3 },                /* a surrogate */
+        { "\xe2\x82", "??", 2 },                     /* a letter cut at the end */
+        { "\xe2\x82x", "??x", 2 },                   /* ... and before an ASCII one */
+    };
+    char buf[64], small[6];
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k_case / sizeof k_case[0]; i++) {
+        snprintf(buf, sizeof buf, "%s", k_case[i].in);
+        assert_int_equal(hx_printable(buf), k_case[i].n);
+        assert_string_equal(buf, k_case[i].out);
+        assert_string_equal(hx_line_str(buf, sizeof buf, k_case[i].in), k_case[i].out);
+    }
+    /* cut to fit at a character's start, never inside a letter: 5 bytes
+     * of room hold "ab" and one two-byte letter, not half of the next */
+    assert_string_equal(hx_line_str(small, sizeof small, "ab\xc3\xa9\xc3\xa9"), "ab\xc3\xa9");
+    assert_string_equal(hx_line_str(small, sizeof small, "abcd\x1b"), "abcd?");
+    assert_string_equal(hx_line_str(small, sizeof small, "abcd\xc3\xa9"), "abcd");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -5480,6 +5519,7 @@ int main(void)
         cmocka_unit_test_teardown(test_csv_names, layout_reset),
         cmocka_unit_test_teardown(test_columns_unit_warned, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
+        cmocka_unit_test(test_printable_utf8),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }

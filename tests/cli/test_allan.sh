@@ -158,6 +158,15 @@ expect_exit 0 "a control character in the log's name: a profile" "$H" allan "$T/
     --quiet --profile "$T/ctl.profile"
 grep -q "^name = $(printf 'a_\303\251b')\$" "$T/ctl.profile" && pass "the profile's name: the control character '_', the letter after it kept" ||
     fail "the profile's name: $(grep -a '^name' "$T/ctl.profile" | od -c | head -2 | tr '\n' ' ')"
+# a log name longer than a profile's name (31 bytes) of two-byte letters: cut before a letter, not inside one (it
+# kept the first byte of the 16th: the written profile held a byte that is not UTF-8 text)
+long16=$(printf '\303\251%.0s' 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16)
+cp "$T/ten.csv" "$T/$long16.csv"
+expect_exit 0 "a log name of 16 two-byte letters: a profile" "$H" allan "$T/$long16.csv" --no-sim --quiet \
+    --profile "$T/long16.profile"
+grep -q "^name = $(printf '\303\251%.0s' 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15)\$" "$T/long16.profile" &&
+    pass "the profile's name cut before a letter (15 of 16)" ||
+    fail "the profile's name: $(grep -a '^name' "$T/long16.profile" | od -c | head -3 | tr '\n' ' ')"
 # several failures in one run: an output that cannot be written (3) decides over bad input or a refused profile (1),
 # since exit 1 says every output was written; every other output is still written. Were the last one set to decide,
 # a cut static log with --profile onto a full disk would say 1, and a walk with --json onto a full disk 3, but

@@ -112,11 +112,13 @@ expect_exit 0 "info of a .bin whose sensor name holds a newline and an escape" "
 expect_out "^sensor      x?samples     1?\[2J$" "info: the control characters shown as '?'"
 [ "$(grep -c '^samples' "$T/out")" -eq 1 ] && pass "info: no forged line" || fail "info: a forged line: $(grep '^samples' "$T/out")"
 if tr -d '\n' <"$T/out" | grep -q "$(printf '\033')"; then fail "info: an escape character printed"; else pass "info: no escape character printed"; fi
-expect_err "ctl.bin: the header's text holds 2 control characters (read as '?')" "info: the control characters warned of"
+expect_err "ctl.bin: the header's text holds 2 control characters or bytes that are not UTF-8 (read as '?')" \
+    "info: the control characters warned of"
 printf '// MT Manager\n// ProductCode: MTi\033[31m-1\n// Update Rate: 100Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n1\t0\t0\t9.8\t0\t0\t0\n2\t0\t0\t9.8\t0\t0\t0\n' >"$T/mt.txt"
 expect_exit 0 "info of an MT Manager export whose ProductCode holds an escape" "$H" info "$T/mt.txt"
 expect_out "^sensor      Xsens MTi?\[31m-1$" "info: the ProductCode's escape shown as '?'"
-expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "info: the ProductCode's control character warned of"
+expect_err "mt.txt: the ProductCode holds control characters or bytes that are not UTF-8 (read as '?')" \
+    "info: the ProductCode's control character warned of"
 expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
 grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
 
@@ -695,6 +697,15 @@ expect_err "column 2 ('0?2J') is not a number" "the C1 control quoted as one '?'
 # one sample before the error: "1 sample", not "1 samples"
 expect_err "(using the 1 sample before it)" "info: one sample before the error in the singular (warning)"
 expect_err "the results cover the 1 sample before the error" "info: one sample before the error in the singular (error)"
+# a byte of no UTF-8 character (a raw 0x9B: CSI to a terminal of 8-bit controls, the Linux console out of UTF-8
+# mode; Latin-1's 0xE9) is shown as '?' too, a UTF-8 letter as it is; before, the raw bytes reached the terminal
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0\2332J\351\303\251,0,-9.8,0,0,0\n' > "$T/raw.csv"
+expect_exit 1 "info, a field holding a raw 0x9B and a Latin-1 byte" "$H" info "$T/raw.csv"
+if LC_ALL=C grep -q "$(printf '\233')" "$T/err" "$T/out"; then fail "a raw 0x9B of the file reached the terminal"
+else pass "no raw 0x9B of the file in the messages"; fi
+expect_err "column 2 ('0?2J?$(printf '\303\251')') is not a number" "bytes of no UTF-8 character as '?', a UTF-8 letter kept"
+expect_exit 1 "info of a missing file with a Latin-1 name" "$H" info "$T/caf$(printf '\351').csv"
+expect_err "caf?.csv: cannot open" "a Latin-1 byte of a file name as '?'"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
 expect_exit 1 "simgap, a log of one sample" "$H" simgap "$T/one.csv"
 expect_err "the log has 1 sample and no usable rate" "simgap: one sample in the singular"

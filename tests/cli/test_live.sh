@@ -670,7 +670,7 @@ if /usr/bin/python3 -c "import json,sys; l=json.load(open(sys.argv[1]))['link'];
 live_case ctlname rec_cn.bin 5
 grep_in "$T/live.out" 'live: sender: IMU?"x"?\[2J, 400 Hz' "the sender's name is printed as one line of text"
 if grep -q "$(printf '\033')" "$T/live.out"; then fail "an escape byte reached the terminal"; else pass "no escape byte in the summary"; fi
-grep_in "$T/live.err" "holds control characters (shown and recorded as '?')" "said once"
+grep_in "$T/live.err" "holds control characters or bytes that are not UTF-8 (shown and recorded as '?')" "said once"
 reads_back rec_cn.bin 300 "the recording reads back"
 grep_in "$T/info.out" 'sensor      IMU?"x"?\[2J' "the recording's header holds the name as one line"
 

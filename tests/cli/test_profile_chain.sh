@@ -278,6 +278,20 @@ expect_err "read by --bias-sigma eq6: accel_bias_sigma_mps2 value 1 5125.* outsi
 # a name goes to stdout: an ESC in it is refused, not sent to the terminal
 sed 's/^name = .*/name = a\x1b[2Jb/' "$T/ds.profile" >"$T/bad.profile"
 bad_profile "with an ESC in its name" "bad.profile:5: name has a control character (byte 2, 0x1b)"
+# ... and a byte that is not UTF-8 (a name saved in Latin-1): refused as such, not passed to the terminal as a raw
+# byte (0x9B is CSI to a terminal of 8-bit controls); a UTF-8 letter is a name's text
+sed "s/^name = .*/name = caf$(printf '\351')/" "$T/ds.profile" >"$T/bad.profile"
+bad_profile "with a Latin-1 byte in its name" "bad.profile:5: name has a byte that is not UTF-8 text (byte 4, 0xe9)"
+sed "s/^name = .*/name = caf$(printf '\303\251')/" "$T/ds.profile" >"$T/utf8.profile"
+expect_exit 0 "a profile whose name holds a UTF-8 letter" "$H" replay vectors/walk.bin --quiet --profile "$T/utf8.profile" \
+    --out "$T/utf8_out.csv"
+# a name of 20 two-byte letters (40 bytes) is kept to 31 bytes: cut before a letter (15), not inside the 16th,
+# which the name check would then refuse
+sed "s/^name = .*/name = $(printf '\303\251%.0s' 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20)/" "$T/ds.profile" >"$T/utf8l.profile"
+expect_exit 0 "a profile whose name is 20 two-byte letters" "$H" replay vectors/walk.bin --profile "$T/utf8l.profile" \
+    --out "$T/utf8_out.csv"
+expect_out "^config  *profile $(printf '\303\251%.0s' 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15) (file " \
+    "the name of 20 two-byte letters shown as its first 15, no byte of the 16th"
 # a misspelt required key: its line is named in the error about the missing key
 sed 's/^gyro_noise_rps_rthz/gyro_nosie/' "$T/ds.profile" >"$T/bad.profile"
 bad_profile "with a misspelt required key" \
