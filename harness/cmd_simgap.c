@@ -24,7 +24,8 @@ static const hx_opt_t k_opts[] = {
                      "20000 apart for independent repeats (docs/simgap.md, \"What --seed seeds\")", 0 },
     { "--fit-frac", "F", "fraction of the log in the fit segment (default 0.6; the rest is held out)", 0 },
     { "--contiguous", NULL, "static logs: fit on the first part (default: on both ends, held out the middle)", 0 },
-    { "--alpha", "A", "family-wise false-alarm level of the gap tests (default 0.05)", 0 },
+    { "--alpha", "A", "false-alarm level of each family of tests: the gap tests, an effect's acceptance, the timing "
+                      "domain (default 0.05)", 0 },
     { "--max-effects", "K", "forward-selection steps per channel (default 3)", 0 },
     { "--prescreen", "K", "candidates simulated per step besides lattice and line (default 3)", 0 },
     { "--profile", "NAME|FILE", "walks: baseline noise from a profile instead of the stances; static logs: also "

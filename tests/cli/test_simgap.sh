@@ -15,6 +15,12 @@ expect_exit 2 "static and walk" "$H" simgap x.csv --static --walk
 expect_exit 2 "too few seeds" "$H" simgap x.csv --seeds 1
 expect_exit 2 "fit fraction out of range" "$H" simgap x.csv --fit-frac 0.95
 expect_exit 1 "missing file" "$H" simgap "$T/nope.csv"
+# --alpha is the level of each of the diagnosis's three families of tests
+# (the gaps, an effect's acceptance, the timing domain; docs/simgap.md,
+# "Seeds and alpha"), not of the gap tests alone, as --help once said
+"$H" simgap --help >"$T/out" 2>&1
+expect_out "^  --alpha A  *false-alarm level of each family of tests: the gap tests, an effect's acceptance, the timing domain (default 0.05)" \
+    "--help: --alpha is the level of each family of tests"
 expect_exit 2 "validate: zero cases" "$H" simgap-validate --cases 0
 expect_exit 2 "validate: bad magnitude range" "$H" simgap-validate --mag-range 3,1
 expect_exit 2 "validate: static-only and walk-only" "$H" simgap-validate --static-only --walk-only
