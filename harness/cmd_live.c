@@ -1219,7 +1219,7 @@ int hx_cmd_live(int argc, char **argv)
     hx_traj_set_config(&L.traj, &nopt, &ncfg); /* the summary's config line, as replay's */
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;
-    L.axes = hx_axes_new(); /* NULL: out of memory, not checked */
+    L.axes = hx_axes_new((double)ncfg.stance.min_zupt_cycle); /* NULL: out of memory, not checked */
     L.record_path = hx_arg(&a, "--record");
     L.baud = baud;
     if (plot_every > 0.0) {

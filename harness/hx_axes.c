@@ -24,6 +24,8 @@
 #define MARGIN_MPS 0.2
 #define STILL_S 0.5       /* the start: the stillest stance sample of the stance's last 0.5 s */
 #define TILT_S 0.01       /* its tilt: the specific force over the 10 ms up to it */
+#define CYCLE_FRAC 0.025  /* a stance: a ZUPT run of 0.025 gait cycles or more (min_run_s) */
+#define RUNS 3            /* the lock-in guard: the shortest run at most half the longest of the last 3 */
 
 static const char NOT_CHECKED_OOM[] = "not checked: out of memory";
 
@@ -56,9 +58,15 @@ static void map_name(int k, char *buf, size_t size)
              (k & 4) ? "-" : "", 'x' + p[2]);
 }
 
-hx_axes_t *hx_axes_new(void)
+hx_axes_t *hx_axes_new(double nav_min_zupt_cycle)
 {
-    return (hx_axes_t *)calloc(1, sizeof(hx_axes_t));
+    hx_axes_t *a = (hx_axes_t *)calloc(1, sizeof(hx_axes_t));
+    if (a != NULL) {
+        /* the navigator's detector keeps the guard itself (its runs pass it
+         * already, decided on its own cycles): the check adds none */
+        a->cycle_frac = nav_min_zupt_cycle >= CYCLE_FRAC ? 0.0 : CYCLE_FRAC;
+    }
+    return a;
 }
 
 void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s)
@@ -73,11 +81,24 @@ void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s)
     }
 }
 
-static void end_swing(hx_axes_t *a, int64_t t_ns)
+/* The swing's end speeds at its first ZUPT frame, held until the run
+ * proves a stance (hx_axes_frame). */
+static void hold_end(hx_axes_t *a, int64_t t_ns)
 {
-    double d = 1e-9 * (double)(t_ns - a->t_swing_ns);
+    int k;
+    for (k = 0; k < HX_AXES_STATES; k++) {
+        a->v_held_mps[k] = (double)fnav_vec3_norm(a->v_mps[k]);
+    }
+    a->t_held_ns = t_ns;
+    a->held = 1;
+}
+
+static void end_swing(hx_axes_t *a)
+{
+    double d = 1e-9 * (double)(a->t_held_ns - a->t_swing_ns);
     int k;
     a->in_swing = 0;
+    a->held = 0;
     if (d < SWING_MIN_S || d > SWING_MAX_S || a->failed) {
         return;
     }
@@ -92,7 +113,7 @@ static void end_swing(hx_axes_t *a, int64_t t_ns)
         a->cap = nc;
     }
     for (k = 0; k < HX_AXES_STATES; k++) {
-        a->vend[a->nswing * HX_AXES_STATES + (size_t)k] = (double)fnav_vec3_norm(a->v_mps[k]);
+        a->vend[a->nswing * HX_AXES_STATES + (size_t)k] = a->v_held_mps[k];
     }
     a->nswing++;
 }
@@ -169,34 +190,126 @@ static void start_swing(hx_axes_t *a, size_t n)
     }
 }
 
+/* The shortest ZUPT run taken for a stance, s: CYCLE_FRAC of the gait
+ * cycle (the median of the last three, as the detector's cycle-scaled run,
+ * docs/navigation.md, "Stance detector"), at most half the longest of the
+ * last RUNS runs (the detector's lock-in guard); 0 before a cycle is
+ * known. */
+static double min_run_s(const hx_axes_t *a)
+{
+    double c0 = a->cyc_s[0], c1 = a->cyc_s[1], c2 = a->cyc_s[2], t, longest = 0.0;
+    int j;
+    if (a->n_cyc == 0 || a->cycle_frac <= 0.0) {
+        return 0.0;
+    }
+    if (a->n_cyc == 1) {
+        t = c0;
+    } else if (a->n_cyc == 2) {
+        t = c0 < c1 ? c0 : c1;
+    } else {
+        t = c0 < c1 ? (c1 < c2 ? c1 : (c0 < c2 ? c2 : c0)) : (c0 < c2 ? c0 : (c1 < c2 ? c2 : c1));
+    }
+    t = a->cycle_frac * (t < (double)FNAV_STANCE_CYCLE_LAG_S ? t : (double)FNAV_STANCE_CYCLE_LAG_S);
+    for (j = 0; j < RUNS; j++) {
+        longest = a->runs_s[j] > longest ? a->runs_s[j] : longest;
+    }
+    return t < 0.5 * longest ? t : 0.5 * longest;
+}
+
+/* A swing begins: the cycle since the last one (one over
+ * FNAV_STANCE_CYCLE_MAX_S spans a stand and clears those known). */
+static void cycle_update(hx_axes_t *a, int64_t t_ns)
+{
+    if (a->have_start) {
+        double c = 1e-9 * (double)(t_ns - a->t_start_ns);
+        if (c <= 0.0 || c > (double)FNAV_STANCE_CYCLE_MAX_S) {
+            a->n_cyc = 0;
+        } else {
+            a->cyc_s[2] = a->cyc_s[1];
+            a->cyc_s[1] = a->cyc_s[0];
+            a->cyc_s[0] = c;
+            a->n_cyc = a->n_cyc < 3 ? a->n_cyc + 1 : 3;
+        }
+    }
+    a->have_start = 1;
+    a->t_start_ns = t_ns;
+}
+
+/* A ZUPT run ended (its frames and their span, s): the lock-in guard's
+ * memory. */
+static void run_end(hx_axes_t *a, double run_s)
+{
+    int j;
+    for (j = RUNS - 1; j > 0; j--) {
+        a->runs_s[j] = a->runs_s[j - 1];
+    }
+    a->runs_s[0] = run_s;
+}
+
+/* A swing runs from a stance to the next, a stance being a run of ZUPT
+ * frames at least min_run_s long: the check needs stances it can take for
+ * rest, not the navigator's latency, so when the navigator runs with a
+ * smaller min_zupt_cycle than the default 0.025 (0 for the shortest
+ * latency) the check applies the detector's cycle-scaled shortest run at
+ * 0.025 itself (with the default or more, the navigator's runs have passed
+ * it already, and every run is taken as before). A shorter run inside a swing (with --param
+ * min_zupt_cycle=0, the detector's dip where the gyro passes through zero
+ * mid-swing in a slow gait: 25 ms at 60 steps/min, 55 ms at 40) neither
+ * ends the swing nor starts one: the swing is integrated through it, its
+ * end speeds held at the run's first frame until the run is long enough.
+ * Split there, each second half began "at rest" where the foot moved at
+ * 0.4 m/s, and the walks were told "the sample rate looks wrong"
+ * (docs/harness.md, "Axes check"). */
 void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
 {
     size_t n;
     int stance = (f->flags & FNAV_FRAME_ZUPT) != 0;
+    double dt;
     /* its sample: the oldest unmatched one with its time stamp */
     while (a->n_used < a->n_in && a->t_ns[a->n_used % HX_AXES_RING] < f->t_ns) {
         a->n_used++;
         a->stance_run = 0; /* a sample without a frame breaks the run */
+        a->run_ok = 0;
     }
     if (a->n_used == a->n_in || a->t_ns[a->n_used % HX_AXES_RING] != f->t_ns) {
         a->in_swing = 0; /* no sample for this frame (not expected): drop the swing */
+        a->held = 0;
         a->stance_run = 0;
+        a->run_ok = 0;
         return;
     }
     n = a->n_used++;
-    if (!stance && !a->in_swing && a->stance_run > 0) {
+    dt = 1e-9 * (double)(f->t_ns - a->t_last_ns);
+    if (!stance && !a->in_swing && a->stance_run > 0 && a->run_ok) {
+        cycle_update(a, f->t_ns);
         start_swing(a, n);
     } else if (a->in_swing) {
-        integrate(a, n % HX_AXES_RING, 1e-9 * (double)(f->t_ns - a->t_last_ns));
+        integrate(a, n % HX_AXES_RING, dt);
     }
     a->t_last_ns = f->t_ns;
     if (stance) {
-        if (a->in_swing) {
-            end_swing(a, f->t_ns);
+        if (a->stance_run == 0) {
+            a->t_run_ns = f->t_ns;
+        }
+        if (a->in_swing && !a->held) {
+            hold_end(a, f->t_ns);
+        }
+        /* the run's span: its frames times the interval */
+        a->run_s = 1e-9 * (double)(f->t_ns - a->t_run_ns) + dt;
+        if (!a->run_ok && a->run_s >= min_run_s(a)) {
+            a->run_ok = 1;
+        }
+        if (a->in_swing && a->run_ok) {
+            end_swing(a);
         }
         a->stance_run++;
     } else {
+        if (a->stance_run > 0) {
+            run_end(a, a->run_s);
+        }
+        a->held = 0; /* the run was no stance: the swing goes on */
         a->stance_run = 0;
+        a->run_ok = 0;
     }
 }
 

@@ -31,12 +31,24 @@ typedef struct {
     fnav_vec3_t acc[HX_AXES_RING], gyr[HX_AXES_RING];
     size_t n_in, n_used;         /* samples pushed / matched or passed */
     size_t stance_run;           /* matched stance samples in a row, up to the newest */
+    double cycle_frac;           /* a stance: a ZUPT run of this many gait cycles (0: any run) */
+    int64_t t_run_ns;            /* that run's first frame */
+    double run_s;                /* its span so far, s */
+    int run_ok;                  /* 1: it is long enough to be a stance (hx_axes.c, min_run_s) */
+    double runs_s[3];            /* the spans of the last ZUPT runs, newest first */
+    double cyc_s[3];             /* the last gait cycles (swing start to swing start), newest first */
+    int n_cyc;                   /* cycles known (0-3) */
+    int have_start;              /* a swing began: */
+    int64_t t_start_ns;          /* its first frame */
     /* the swing being integrated, one state per gyro map (the core's math) */
     int in_swing;
     int64_t t_swing_ns, t_last_ns; /* the swing's first frame; the last matched frame */
     fnav_real_t g_mps2;          /* |f| of this swing's start tilt */
     fnav_quat_t q_nb[HX_AXES_STATES];
     fnav_vec3_t v_mps[HX_AXES_STATES];
+    int held;                    /* the swing met a ZUPT run not yet proven a stance: */
+    int64_t t_held_ns;           /* its first frame, */
+    double v_held_mps[HX_AXES_STATES]; /* the end speeds there */
     /* end speeds, swings x states (the maps, then the time scales), m/s */
     double *vend;
     size_t nswing, cap;
@@ -61,8 +73,11 @@ typedef struct {
                                       hx_nav_replay) */
 } hx_axes_result_t;
 
-/** A new check (about 100 KB, so on the heap); NULL when out of memory. */
-hx_axes_t *hx_axes_new(void);
+/** A new check (about 100 KB, so on the heap); NULL when out of memory.
+ *  nav_min_zupt_cycle: the navigator's (fnav_stance_config_t); below the
+ *  default 0.025 the check takes only ZUPT runs of 0.025 gait cycles or more
+ *  for stances (hx_axes.c, hx_axes_frame). */
+hx_axes_t *hx_axes_new(double nav_min_zupt_cycle);
 /** A sample as it is read. */
 void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s);
 /** A frame of the navigator, in order, after its sample was pushed. */

@@ -2175,7 +2175,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         pc.probe = (int64_t *)malloc(HX_STAMPS_PROBE_N * sizeof *pc.probe);
     }
     if (traj != NULL && (flags & HX_REPLAY_AXES)) {
-        pc.axes = hx_axes_new(); /* NULL: out of memory, not checked */
+        pc.axes = hx_axes_new((double)cfg->stance.min_zupt_cycle); /* NULL: out of memory, not checked */
     }
     if (traj != NULL && (flags & HX_REPLAY_EVENTS)) {
         /* the navigator's detector's own configuration (its rate and gravity

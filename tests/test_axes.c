@@ -111,7 +111,7 @@ static void walk_about(int n, double gyro_sign, int swap, size_t lag, double bet
     const double stance_s = 0.4, swing_s = 0.5, amp = 1.0; /* 57 deg */
     size_t per = (size_t)((stance_s + swing_s) * RATE_HZ), total = (size_t)n * per + (size_t)(stance_s * RATE_HZ), i;
     fnav_nav_frame_t *fr = (fnav_nav_frame_t *)calloc(total, sizeof *fr);
-    hx_axes_t *a = hx_axes_new();
+    hx_axes_t *a = hx_axes_new(0.025);
     assert_non_null(fr);
     assert_non_null(a);
     for (i = 0; i < total + lag; i++) {

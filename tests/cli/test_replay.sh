@@ -348,6 +348,28 @@ expect_err "walk_nt.csv: the sample rate looks wrong: integrated through each of
 if grep -q "do not match the accelerometer" "$T/err"; then fail "a wrong rate offered a gyro map"; else pass "a wrong rate: no gyro map offered"; fi
 json "$T/nt.json" "j['axes']['time_problem'] is True and j['axes']['problem'] is False and j['axes']['time_scale'] == 0.8" \
     && pass "JSON: time_problem, scale 0.8" || fail "JSON axes: $(grep -A12 '"axes"' "$T/nt.json" | tr -d '\n ')"
+# a slow walk with --param min_zupt_cycle=0: the detector's dip where the
+# gyro passes through zero mid-swing (25 ms at 60 steps/min) cut every swing
+# in two, each second half "at rest" where the foot moved, and the right
+# rate was called wrong ("about 250 Hz"); the check takes a ZUPT run of
+# 0.025 gait cycles or more for a stance (docs/harness.md, "Axes check")
+"$H" sim --motion walk --duration 30 --cadence 60 --speed 0.4 --seed 1 --out "$T/slow60.bin" > /dev/null 2>&1
+expect_exit 0 "a 60 steps/min walk, min_zupt_cycle=0" "$H" replay "$T/slow60.bin" --param min_zupt_cycle=0 --json "$T/slow60.json"
+if grep -q "sample rate looks wrong" "$T/err"; then fail "60 steps/min, min_zupt_cycle=0: the right rate called wrong"
+else pass "60 steps/min, min_zupt_cycle=0: no rate warning"; fi
+json "$T/slow60.json" "j['axes']['time_problem'] is False and j['axes']['problem'] is False and j['axes']['swings'] >= 8" \
+    && pass "60 steps/min, min_zupt_cycle=0: JSON axes agree" || fail "60 steps/min JSON axes: $(grep -A12 '"axes"' "$T/slow60.json" | tr -d '\n ')"
+# and a wrong rate there is still named, with its scale (0.5 before)
+"$H" convert "$T/slow60.bin" "$T/slow60.csv" > /dev/null 2>&1
+cut -d, -f2- "$T/slow60.csv" > "$T/slow60_nt.csv"
+expect_exit 0 "the 60 steps/min walk without stamps at 0.8 of its rate, min_zupt_cycle=0" \
+    "$H" replay "$T/slow60_nt.csv" --input-rate 160 --param min_zupt_cycle=0
+expect_err "slow60_nt.csv: the sample rate looks wrong: .* with every interval 0.8 times as long, a rate 1.25 times the one read .*; read at 160 Hz, so about 200 Hz" \
+    "60 steps/min, min_zupt_cycle=0, 0.8 of the rate: named with the rate that fits"
+"$H" sim --motion walk --duration 30 --cadence 40 --speed 0.4 --seed 1 --out "$T/slow40.bin" > /dev/null 2>&1
+expect_exit 0 "a 40 steps/min walk, min_zupt_cycle=0" "$H" replay "$T/slow40.bin" --param min_zupt_cycle=0
+if grep -q "sample rate looks wrong" "$T/err"; then fail "40 steps/min, min_zupt_cycle=0: the right rate called wrong"
+else pass "40 steps/min, min_zupt_cycle=0: no rate warning"; fi
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
 expect_err "only downsampling" "rate error explains"
 expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): leave --rate out, or give a rate below 397.920 Hz" "the input rate in the error is named the median's, with what to do"
