@@ -1270,12 +1270,33 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
     }
     snprintf(js + o, 2 * (size_t)size + 1 - o, "%s", buf + i0);
     free(buf);
-    root = cJSON_Parse(js);
-    free(js);
-    if (root == NULL) {
-        snprintf(why, why_size, "the events file is not valid JSON");
-        return -1;
+    {
+        /* where the parser stopped: the line (the NaN -> null edit keeps
+         * the lines), or the end of a file cut short */
+        const char *stop = NULL;
+        root = cJSON_ParseWithOpts(js, &stop, 0);
+        if (root == NULL) {
+            long line = 1;
+            const char *c;
+            for (c = js; stop != NULL && c < stop && *c != '\0'; c++) {
+                line += *c == '\n';
+            }
+            if (stop == NULL) {
+                snprintf(why, why_size, "the events file is not valid JSON");
+            } else if (strspn(stop, " \t\r\n") == strlen(stop)) {
+                snprintf(why, why_size, "the events file is not valid JSON (it ends early)");
+            } else {
+                /* the text there, up to 16 bytes of its line (a file of
+                 * one line, as the data set's, gives no other clue) */
+                const int len = (int)strcspn(stop, "\r\n");
+                snprintf(why, why_size, "the events file is not valid JSON (line %ld, at '%.*s')", line,
+                         len < 16 ? len : 16, stop);
+            }
+            free(js);
+            return -1;
+        }
     }
+    free(js);
     if (json_pair(cJSON_GetObjectItem(root, "TrialBoundaries"), tb) != 0) {
         cJSON_Delete(root);
         snprintf(why, why_size, "the events file has no TrialBoundaries pair");

@@ -1967,6 +1967,7 @@ if [ -n "$D" ]; then
         cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/"
         cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/1-2_$f.txt"
         cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/1-3_$f.txt"
+        cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/1-4_$f.txt"
     done
     pad=$(awk 'BEGIN { for (i = 0; i < 12000; i++) printf "x" }')
     sed "s/^{/{\"Pad\": \"$pad\", /" "$D/ipol_gait_xsens/1-1.json" > "$T/bad/ipol_gait_xsens/1-1.json"
@@ -1975,20 +1976,27 @@ if [ -n "$D" ]; then
     # feet fail, since the other foot's swings decide which are evaluated
     # (the right foot was scored as if the left never left the ground)
     echo '{"TrialBoundaries": [459, 2464], "LeftFootEvents": [[527]], "RightFootEvents": []}' > "$T/bad/ipol_gait_xsens/1-3.json"
+    # a syntax error inside the file: its line and the text there (the data set's files are one line long, so a
+    # line alone says little; it said only "not valid JSON")
+    printf '{"TrialBoundaries": [459, 2464],\n "LeftFootEvents": [[527, 574],, [641, 687]], "RightFootEvents": []}\n' \
+        > "$T/bad/ipol_gait_xsens/1-4.json"
     expect_exit 1 "eval with walks that give no figures" "$H" eval --no-experiments --data "$T/bad" --out "$T/bad.md" --json "$T/bad.json"
-    expect_err "6 run(s) failed" "eval counts the runs without figures"
+    expect_err "8 run(s) failed" "eval counts the runs without figures"
     if grep -q "| Measurement_100521_98 | - |.*| not run: empty file |" "$T/bad.md"; then pass "an empty walk keeps its row"; else fail "empty walk row: $(grep 98 "$T/bad.md")"; fi
     if grep -q "| SensorConnectData_31 | - |.*| not run: no truth file SensorConnectData_31_strides_gcp.csv |" "$T/bad.md"; then
         pass "a walk without its truth keeps its row"; else fail "walk without truth: $(grep SensorConnectData_31 "$T/bad.md")"; fi
-    if grep -q "| 1-2 | left | - |.*| not run: the events file is not valid JSON |" "$T/bad.md"; then
-        pass "a broken events file is named"; else fail "broken events row: $(grep '1-2' "$T/bad.md")"; fi
+    if grep -q "| 1-2 | left | - |.*| not run: the events file is not valid JSON (it ends early) |" "$T/bad.md"; then
+        pass "a broken events file is named, cut short"; else fail "broken events row: $(grep '1-2' "$T/bad.md")"; fi
+    if grep -q "| 1-4 | left | - |.*| not run: the events file is not valid JSON (line 2, at ', \[641, 687\]\], \"') |" "$T/bad.md"; then
+        pass "a syntax error in an events file: its line and the text there"
+    else fail "syntax error row: $(grep '1-4' "$T/bad.md")"; fi
     if grep -q "| 1-3 | left | - |.*| not run: LeftFootEvents\[0\] is not a pair of sample indices |" "$T/bad.md" &&
         grep -q "| 1-3 | right | - |.*| not run: LeftFootEvents\[0\] is not a pair of sample indices |" "$T/bad.md"; then
         pass "an event that is not a pair is named"; else fail "bad event row: $(grep '1-3' "$T/bad.md")"; fi
     if grep -q "| 1-1 | left | [0-9]" "$T/bad.md" && [ "$(wc -c < "$T/bad/ipol_gait_xsens/1-1.json")" -gt 8192 ]; then
         pass "an events file over 8 KB is read"; else fail "large events file: $(grep '1-1' "$T/bad.md")"; fi
     if grep -q "| Measurement_100521_2 | [0-9]" "$T/bad.md"; then pass "the good walk still has its figures"; else fail "good walk lost"; fi
-    if grep -q '\*\*6 run(s) failed\*\*' "$T/bad.md" && grep -q '"failed_runs":[[:space:]]*6' "$T/bad.json"; then
+    if grep -q '\*\*8 run(s) failed\*\*' "$T/bad.md" && grep -q '"failed_runs":[[:space:]]*8' "$T/bad.json"; then
         pass "results.md and the JSON say the results are incomplete"; else fail "failure count not reported"; fi
     bad=$(md_bad_rows "$T/bad.md")
     if [ -z "$bad" ]; then pass "not-run rows keep the tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
