@@ -2927,30 +2927,49 @@ int hx_nav_gait_slow(const hx_nav_summary_t *s)
            !hx_nav_little_motion(s);
 }
 
+/* The shortest ZUPT run, samples, the detector takes at cycles of cycle_s
+ * with min_zupt_cycle frac (fnav_stance.c cycle_update): the cycle's samples,
+ * at least min_zupt_s's (n_fixed), at most n_max (the look-ahead's; none
+ * when 0). */
+static long slow_cycle_run_n(double frac, double cycle_s, double rate_hz, long n_fixed, long n_max)
+{
+    long n = lround(frac * cycle_s * rate_hz);
+    n = n > n_fixed ? n : n_fixed;
+    return n_max > 0 && n > n_max ? n_max : n;
+}
+
 hx_slow_note_t hx_nav_slow_note(const hx_traj_t *t, const hx_nav_summary_t *s, double *run_ms)
 {
     const fnav_stance_config_t *sc = t->have_config ? &t->config.stance : &fnav_nav_config_default.stance;
+    const long n_fixed = t->zupt_min_n > 0 ? (long)t->zupt_min_n : lround((double)sc->min_zupt_s * t->rate_hz);
+    long n, n_max;
     if (!hx_nav_gait_slow(s)) {
         return HX_SLOW_NOTE_NONE;
     }
     /* 0.999: --param min_zupt_cycle=0.02 reads 0.0199999996 in float */
     if ((double)sc->min_zupt_cycle >= 0.999 * HX_NAV_SLOW_CYCLE_FRAC) {
         if (run_ms != NULL) {
-            /* the detector's run for cycles of this length (fnav_stance.c
-             * cycle_update): the cycle's samples, at least min_zupt_s's, at
-             * most what the look-ahead holds */
-            long n = lround((double)sc->min_zupt_cycle * s->median_stride_s * t->rate_hz);
-            const long n_min = t->zupt_min_n > 0 ? (long)t->zupt_min_n : lround((double)sc->min_zupt_s * t->rate_hz);
-            n = n > n_min ? n : n_min;
-            if (t->zupt_max_n > 0 && n > (long)t->zupt_max_n) {
-                n = (long)t->zupt_max_n;
-            }
+            n = slow_cycle_run_n((double)sc->min_zupt_cycle, s->median_stride_s, t->rate_hz, n_fixed,
+                                 t->zupt_max_n > 0 ? (long)t->zupt_max_n : 0);
             *run_ms = t->rate_hz > 0.0 ? 1e3 * (double)n / t->rate_hz : 0.0;
         }
         return HX_SLOW_NOTE_CYCLE;
     }
-    /* a run given a shortest ZUPT run of the remedy's or longer has had it */
-    return (double)sc->min_zupt_s >= 0.999 * HX_NAV_SLOW_MIN_ZUPT_S ? HX_SLOW_NOTE_NONE : HX_SLOW_NOTE_REMEDY;
+    /* the remedy, the default cycle-scaled run (HX_NAV_SLOW_REMEDY_CYCLE),
+     * as the detector would take it at this cycle: its look-ahead (a cycle
+     * of FNAV_STANCE_CYCLE_LAG_S, fnav_stance.c set_rate) caps it, and the
+     * ring caps that. A fixed min_zupt_s guards as well only when its run
+     * is as long: a fixed 50 ms does not at 40 steps/min, whose mid-swing
+     * dips last about 55 ms */
+    n_max = slow_cycle_run_n(HX_NAV_SLOW_REMEDY_CYCLE, (double)FNAV_STANCE_CYCLE_LAG_S, t->rate_hz, n_fixed, 255);
+    if (t->window > 0 && n_max > (long)FNAV_STANCE_MAX_WINDOW - 1 - (long)(t->window - 1) / 2) {
+        n_max = (long)FNAV_STANCE_MAX_WINDOW - 1 - (long)(t->window - 1) / 2;
+    }
+    n = slow_cycle_run_n(HX_NAV_SLOW_REMEDY_CYCLE, s->median_stride_s, t->rate_hz, n_fixed, n_max);
+    if (run_ms != NULL) {
+        *run_ms = t->rate_hz > 0.0 ? 1e3 * (double)n / t->rate_hz : 0.0;
+    }
+    return n_fixed >= n ? HX_SLOW_NOTE_NONE : HX_SLOW_NOTE_REMEDY;
 }
 
 int hx_nav_coarse_stamps(const fnav_nav_stats_t *st)
@@ -3125,9 +3144,16 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             fprintf(f, "note              the gait cycles last %.2f s (median of %ld), %.0f steps/min: a slow gait, where "
                        "the foot's deceleration before landing can pass for a short stance and its ZUPT take speed out of "
                        "the swing (the strides read short; real walks played this slow lost up to a third of their "
-                       "length); --param min_zupt_s=%.2f guards against it (docs/harness.md, \"Slow walking, real walks "
-                       "played slower\")\n",
-                    s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, HX_NAV_SLOW_MIN_ZUPT_S);
+                       "length); the default shortest ZUPT run, scaled with the cycle (--param min_zupt_cycle=%g: "
+                       "%.0f ms at this cycle), guards against it; a fixed --param min_zupt_s shorter than that (%.0f ms "
+                       "here) may not, as the dips grow longer in a slower gait (docs/harness.md, \"Slow walking, real "
+                       "walks played slower\")\n",
+                    s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, HX_NAV_SLOW_REMEDY_CYCLE,
+                    slow_run_ms,
+                    t->zupt_min_n > 0 && t->rate_hz > 0.0
+                        ? 1e3 * (double)t->zupt_min_n / t->rate_hz
+                        : 1e3 * (double)(t->have_config ? t->config.stance.min_zupt_s
+                                                        : fnav_nav_config_default.stance.min_zupt_s));
         }
     }
     if (hx_nav_coarse_stamps(st)) {

@@ -506,6 +506,14 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  slowed copies lost up to 23 % at 0.015, up to 10 % at 0.02 and 2.5 % at
  *  0.025 (docs/harness.md, "Slow walking, real walks played slower"). */
 #define HX_NAV_SLOW_CYCLE_FRAC 0.02
+/** The slow-gait note's remedy below HX_NAV_SLOW_CYCLE_FRAC: the default
+ *  min_zupt_cycle, whose run (the run_ms of hx_nav_slow_note) the note gives
+ *  at the median cycle. A fixed min_zupt_s guards only when it is as long:
+ *  the fixed HX_NAV_SLOW_MIN_ZUPT_S does not at 40 steps/min (the
+ *  simulator's walk, mid-swing dips of about 55 ms: 34 strides for 19 with
+ *  --param min_zupt_cycle=0 --param min_zupt_s=0.05, docs/harness.md,
+ *  "Slow walking, real walks played slower"). */
+#define HX_NAV_SLOW_REMEDY_CYCLE 0.025
 
 /** True when the gait is slow (HX_NAV_SLOW_CYCLE_S; not for a log with
  *  almost no motion, which has its own note): the JSON's gait_cycles.slow,
@@ -515,17 +523,21 @@ int hx_nav_gait_slow(const hx_nav_summary_t *s);
 /** The summary's slow-gait note, for the configuration that ran (t's; the
  *  default when not said). */
 typedef enum {
-    HX_SLOW_NOTE_NONE = 0, /**< no slow gait, or min_zupt_s of HX_NAV_SLOW_MIN_ZUPT_S or more with min_zupt_cycle
-                                below HX_NAV_SLOW_CYCLE_FRAC (the remedy applied): nothing said */
+    HX_SLOW_NOTE_NONE = 0, /**< no slow gait, or min_zupt_cycle below HX_NAV_SLOW_CYCLE_FRAC with a min_zupt_s
+                                whose run is as long as HX_NAV_SLOW_REMEDY_CYCLE's at the median cycle (as
+                                long as the remedy): nothing said */
     HX_SLOW_NOTE_CYCLE,    /**< min_zupt_cycle of HX_NAV_SLOW_CYCLE_FRAC or more: the run follows the cycle */
-    HX_SLOW_NOTE_REMEDY    /**< neither: the note names --param min_zupt_s=HX_NAV_SLOW_MIN_ZUPT_S */
+    HX_SLOW_NOTE_REMEDY    /**< neither: the note names --param min_zupt_cycle=HX_NAV_SLOW_REMEDY_CYCLE and
+                                its run at the median cycle */
 } hx_slow_note_t;
 
-/** Which slow-gait note the summary prints; with HX_SLOW_NOTE_CYCLE,
- *  *run_ms (when not NULL) receives the shortest ZUPT run the detector
- *  takes at the median gait cycle, ms: max(min_zupt_s's run,
- *  round(min_zupt_cycle x cycle x rate)) samples, capped at the look-ahead's
- *  (fnav_stance.c cycle_update). */
+/** Which slow-gait note the summary prints; *run_ms (when not NULL)
+ *  receives the shortest ZUPT run the detector takes at the median gait
+ *  cycle, ms: max(min_zupt_s's run, round(min_zupt_cycle x cycle x rate))
+ *  samples, capped at the look-ahead's (fnav_stance.c cycle_update); with
+ *  HX_SLOW_NOTE_CYCLE for the min_zupt_cycle that ran, otherwise for
+ *  HX_NAV_SLOW_REMEDY_CYCLE (with its own look-ahead, that of a cycle of
+ *  FNAV_STANCE_CYCLE_LAG_S, capped by the ring). */
 hx_slow_note_t hx_nav_slow_note(const hx_traj_t *t, const hx_nav_summary_t *s, double *run_ms);
 
 /** True when the samples that repeat the time stamp before them reach
