@@ -1831,7 +1831,9 @@ grep -q "swapped" "$T/err" && fail "columns in order called swapped" || pass "co
 # walk (0.8 m strides at 0.4 m/s, 2 s cycles): by default (min_zupt_cycle 0.025) the shortest ZUPT
 # run follows the cycle (50 ms at this cycle), the strides read 0.8 m and the note names that run. With the
 # cycle-scaled run off (--param min_zupt_cycle=0) the strides read short and the note
-# names --param min_zupt_s=0.05, which brings the median stride to 0.8 m and takes the note away. gait_cycles.slow
+# names the default cycle-scaled run, --param min_zupt_cycle=0.025, with its run at this cycle (50 ms), not a fixed
+# min_zupt_s=0.05 (which does not guard a 40 steps/min walk, whose dips last about 55 ms); a min_zupt_s as long
+# (0.05 here) brings the median stride to 0.8 m and takes the note away. gait_cycles.slow
 # says the gait is slow whatever guards against it (not whether the note was printed).
 "$H" sim --motion walk --duration 60 --cadence 60 --speed 0.4 --profile none --out "$T/slow60.bin" >/dev/null 2>&1 ||
     fail "sim a 60 steps/min walk"
@@ -1848,7 +1850,10 @@ expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0" "$H" replay "$T/slow
     --param min_zupt_cycle=0 --json "$T/slow60.json" --strides "$T/slow60_s.csv"
 expect_out_re "^note +the gait cycles last 2\.00 s \(median of [0-9]+\), 60 steps/min: a slow gait" \
     "a slow gait named with min_zupt_cycle=0"
-expect_out "--param min_zupt_s=0.05 guards against it" "min_zupt_cycle=0: the slow gait's remedy named"
+expect_out "the default shortest ZUPT run, scaled with the cycle (--param min_zupt_cycle=0.025: 50 ms at this cycle), guards against it; a fixed --param min_zupt_s shorter than that (20 ms here) may not" \
+    "min_zupt_cycle=0: the slow gait's remedy named, the default cycle-scaled run with its length at this cycle"
+grep -q "min_zupt_s=0.05" "$T/out" && fail "min_zupt_cycle=0: the slow-gait note names min_zupt_s=0.05 (no guard at 40 steps/min)" ||
+    pass "min_zupt_cycle=0: the slow-gait note does not name min_zupt_s=0.05"
 grep -q "follows the cycle" "$T/out" && fail "min_zupt_cycle=0: the slow-gait note names a cycle-scaled run (it is off)" ||
     pass "min_zupt_cycle=0: the slow-gait note names no cycle-scaled run"
 json "$T/slow60.json" 'j["gait_cycles"]["slow"] is True' && pass "replay --json: gait_cycles.slow true with min_zupt_cycle=0" ||
@@ -1858,7 +1863,7 @@ expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0.02" "$H" replay "$T/s
 expect_out "the shortest ZUPT run follows the cycle (min_zupt_cycle 0.02: 40 ms at this cycle)" \
     "min_zupt_cycle=0.02: the cycle-scaled run named"
 expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0.015" "$H" replay "$T/slow60.bin" --out /dev/null --param min_zupt_cycle=0.015
-expect_out "--param min_zupt_s=0.05 guards against it" "min_zupt_cycle=0.015: the remedy named"
+expect_out "(--param min_zupt_cycle=0.025: 50 ms at this cycle), guards against it" "min_zupt_cycle=0.015: the remedy named"
 # at 820 Hz the ring of 64 caps the run at 53 samples (64.6 ms) for cycles over 2.59 s: at 45 steps/min (2.67 s) the
 # note gives the capped run, 65 ms, not the 67 ms (55 samples) of the cycle
 "$H" sim --motion walk --duration 60 --cadence 45 --speed 0.4 --profile none --rate 820 --out "$T/slow45_820.bin" \
@@ -1866,6 +1871,20 @@ expect_out "--param min_zupt_s=0.05 guards against it" "min_zupt_cycle=0.015: th
 expect_exit 0 "a 45 steps/min walk at 820 Hz" "$H" replay "$T/slow45_820.bin" --out /dev/null
 expect_out "last 2.67 s (median of [0-9]*), 45 steps/min: a slow gait.*follows the cycle (min_zupt_cycle 0.025: 65 ms at this cycle)" \
     "the slow-gait note gives the run the ring caps (820 Hz)"
+# a fixed run shorter than the default cycle-scaled one is no remedy: at 45 steps/min (2.67 s cycles) 0.025 of the
+# cycle is 65 ms (13 samples at 200 Hz), and min_zupt_s=0.05 leaves the note, naming the 50 ms; 0.065 takes it away
+"$H" sim --motion walk --duration 60 --cadence 45 --speed 0.4 --profile none --out "$T/slow45.bin" >/dev/null 2>&1 ||
+    fail "sim a 45 steps/min walk"
+expect_exit 0 "the 45 steps/min walk with min_zupt_cycle=0 min_zupt_s=0.05" "$H" replay "$T/slow45.bin" --out /dev/null \
+    --param min_zupt_cycle=0 --param min_zupt_s=0.05
+expect_out_re "^note +the gait cycles last 2\.67 s \(median of [0-9]+\), 45 steps/min: a slow gait" \
+    "min_zupt_s=0.05 at 45 steps/min: the slow gait still named"
+expect_out "(--param min_zupt_cycle=0.025: 65 ms at this cycle), guards against it; a fixed --param min_zupt_s shorter than that (50 ms here) may not" \
+    "min_zupt_s=0.05 at 45 steps/min: the default run (65 ms) named, the fixed 50 ms called short"
+expect_exit 0 "the 45 steps/min walk with min_zupt_cycle=0 min_zupt_s=0.065" "$H" replay "$T/slow45.bin" --out /dev/null \
+    --param min_zupt_cycle=0 --param min_zupt_s=0.065
+grep -q "slow gait" "$T/out" && fail "min_zupt_s=0.065 at 45 steps/min (as long as the default's 65 ms): a slow-gait note" ||
+    pass "min_zupt_s=0.065 at 45 steps/min (as long as the default's 65 ms): no slow-gait note"
 expect_exit 0 "the 60 steps/min walk with the remedy" "$H" replay "$T/slow60.bin" --out /dev/null \
     --param min_zupt_cycle=0 --param min_zupt_s=0.05 --json "$T/slow60_fix.json" --strides "$T/slow60_fix_s.csv"
 grep -q "slow gait" "$T/out" && fail "the slow-gait note with its remedy applied" || pass "no slow-gait note with the remedy"
