@@ -492,27 +492,27 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  up, with min_zupt_cycle 0 (the scaling off): in late swing
  *  the foot's slowed deceleration brings |f| near g, the statistic dips
  *  under the threshold for 20-32 ms, longer than the shortest ZUPT run, and
- *  the ZUPT zeroes a swing's velocity. HX_NAV_SLOW_MIN_ZUPT_S (as --param
- *  min_zupt_s) cured those copies but breaks a jogger, whose stances are
- *  shorter (footprint walk 35: 2.67 -> 80.74 %); a shortest run scaled with
+ *  the ZUPT zeroes a swing's velocity. A fixed shortest run of 50 ms
+ *  (--param min_zupt_s=0.05) cured those copies but breaks a jogger, whose
+ *  stances are shorter (footprint walk 35: 2.67 -> 80.74 %), and does not
+ *  guard a slower gait (HX_NAV_SLOW_REMEDY_CYCLE); a shortest run scaled with
  *  the gait cycle, min_zupt_cycle 0.025, the default (with
  *  the lock-in guard that keeps walk 35 at 100 Hz from locking in,
  *  docs/navigation.md), cures them too (2.5 % or less) and keeps walk 35.
  *  docs/harness.md, "Slow walking, real walks played slower". */
 #define HX_NAV_SLOW_CYCLE_S (120.0 / 70.0)
-#define HX_NAV_SLOW_MIN_ZUPT_S 0.05
 /** The min_zupt_cycle from which the slow-gait note says the shortest ZUPT
- *  run follows the cycle instead of naming HX_NAV_SLOW_MIN_ZUPT_S: the
+ *  run follows the cycle instead of naming HX_NAV_SLOW_REMEDY_CYCLE: the
  *  slowed copies lost up to 23 % at 0.015, up to 10 % at 0.02 and 2.5 % at
  *  0.025 (docs/harness.md, "Slow walking, real walks played slower"). */
 #define HX_NAV_SLOW_CYCLE_FRAC 0.02
 /** The slow-gait note's remedy below HX_NAV_SLOW_CYCLE_FRAC: the default
  *  min_zupt_cycle, whose run (the run_ms of hx_nav_slow_note) the note gives
  *  at the median cycle. A fixed min_zupt_s guards only when it is as long:
- *  the fixed HX_NAV_SLOW_MIN_ZUPT_S does not at 40 steps/min (the
- *  simulator's walk, mid-swing dips of about 55 ms: 34 strides for 19 with
- *  --param min_zupt_cycle=0 --param min_zupt_s=0.05, docs/harness.md,
- *  "Slow walking, real walks played slower"). */
+ *  a fixed 50 ms does not at 40 steps/min (the simulator's walk, mid-swing
+ *  dips of about 55 ms: 34 strides for 17 walked, 19 by default, with
+ *  --param min_zupt_cycle=0 --param min_zupt_s=0.05; docs/harness.md, the
+ *  summary's note "a slow gait", has the commands). */
 #define HX_NAV_SLOW_REMEDY_CYCLE 0.025
 
 /** True when the gait is slow (HX_NAV_SLOW_CYCLE_S; not for a log with
