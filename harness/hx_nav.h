@@ -513,7 +513,7 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  dips of about 55 ms: 34 strides for 17 walked, 19 by default, with
  *  --param min_zupt_cycle=0 --param min_zupt_s=0.05; docs/harness.md, the
  *  summary's note "a slow gait", has the commands). */
-#define HX_NAV_SLOW_REMEDY_CYCLE 0.025
+#define HX_NAV_SLOW_REMEDY_CYCLE ((double)fnav_nav_config_default.stance.min_zupt_cycle) /* 0.025, the default's */
 
 /** True when the gait is slow (HX_NAV_SLOW_CYCLE_S; not for a log with
  *  almost no motion, which has its own note): the JSON's gait_cycles.slow,
