@@ -268,8 +268,12 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
     /* its sample: the oldest unmatched one with its time stamp */
     while (a->n_used < a->n_in && a->t_ns[a->n_used % HX_AXES_RING] < f->t_ns) {
         a->n_used++;
+        if (a->stance_run > 0) {
+            run_end(a, a->run_s);
+        }
         a->stance_run = 0; /* a sample without a frame breaks the run */
         a->run_ok = 0;
+        a->held = 0; /* ... and its held end: the next run holds its own */
     }
     if (a->n_used == a->n_in || a->t_ns[a->n_used % HX_AXES_RING] != f->t_ns) {
         a->in_swing = 0; /* no sample for this frame (not expected): drop the swing */

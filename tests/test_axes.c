@@ -270,6 +270,55 @@ static void test_too_few_swings(void **state)
     assert_non_null(strstr(r.msg, "not checked"));
 }
 
+/* With min_zupt_cycle below the default the check takes a ZUPT run for a
+ * stance only at 0.025 gait cycles or more (hx_axes.c, hx_axes_frame): a
+ * foot at rest (f = (0, 0, g)) 0.4 s, then a swing of 0.5 s accelerating
+ * at 1 m/s^2 along x (f = (1, 0, g), no turn), three times; the fourth
+ * swing has a 2-frame ZUPT dip at its 60th sample (5 ms, under 0.025 of
+ * the 0.9 s cycle: integrated through), then a 1-frame one at its 100th
+ * whose run 40 samples without a frame break (the navigator rejected
+ * them), after which the ZUPT frames are a stance. The swing ends at that
+ * run's first frame, sample 141 (0.355 m/s: 142 x 2.5 ms x 1 m/s^2, the
+ * gap in one step); before, the end speed held at the broken run's frame,
+ * sample 100 (0.2525 m/s), was kept. */
+static void test_dip_and_broken_run(void **state)
+{
+    const size_t per = 360u, stance = 160u, total = 4u * per + stance;
+    hx_axes_t *a = hx_axes_new(0.0);
+    hx_axes_result_t r;
+    size_t i;
+    (void)state;
+    assert_non_null(a);
+    for (i = 0; i < total; i++) {
+        const size_t c = i / per, j = i % per;
+        const int swing = j >= stance && c < 4u;
+        const size_t js = j - stance; /* the swing's sample, when swing */
+        fnav_sample_t s;
+        fnav_nav_frame_t f;
+        memset(&s, 0, sizeof s);
+        memset(&f, 0, sizeof f);
+        s.t_ns = (int64_t)i * 2500000;
+        s.accel_mps2[0] = (fnav_real_t)(swing ? 1.0 : 0.0);
+        s.accel_mps2[2] = (fnav_real_t)G_MPS2;
+        hx_axes_sample(a, &s);
+        f.t_ns = s.t_ns;
+        f.flags = swing ? 0u : FNAV_FRAME_ZUPT;
+        if (c == 3u && swing && (js == 60u || js == 61u || js >= 100u)) {
+            f.flags = FNAV_FRAME_ZUPT;
+        }
+        if (c == 3u && swing && js > 100u && js <= 140u) {
+            continue; /* samples without a frame */
+        }
+        hx_axes_frame(a, &f);
+    }
+    assert_int_equal(a->nswing, 4);
+    for (i = 0; i < 3u; i++) {
+        assert_true(fabs(a->vend[i * HX_AXES_STATES] - 0.5) < 1e-3); /* 200 samples x 2.5 ms */
+    }
+    assert_true(fabs(a->vend[3u * HX_AXES_STATES] - 0.355) < 1e-3);
+    hx_axes_finish(a, &r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -280,6 +329,7 @@ int main(void)
         cmocka_unit_test(test_cyclic_map),
         cmocka_unit_test(test_frames_behind_the_ring),
         cmocka_unit_test(test_too_few_swings),
+        cmocka_unit_test(test_dip_and_broken_run),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
