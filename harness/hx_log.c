@@ -3157,8 +3157,8 @@ static int setup_bin(hx_reader_t *r)
          * escape sequence reach the terminal */
         const int ctl = hx_printable(r->meta.sensor) + hx_printable(r->meta.source) + hx_printable(r->meta.axes);
         if (ctl > 0) {
-            add_warn(r, "%s: the header's text holds %d control character%s or byte%s that are not UTF-8 (read as '?')",
-                     r->path, ctl, ctl == 1 ? "" : "s", ctl == 1 ? "" : "s");
+            add_warn(r, "%s: the header's text holds %d control character%s or byte%s that %s not UTF-8 (read as '?')",
+                     r->path, ctl, ctl == 1 ? "" : "s", ctl == 1 ? "" : "s", ctl == 1 ? "is" : "are");
         }
     }
     return 0;

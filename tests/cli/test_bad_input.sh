@@ -114,6 +114,16 @@ expect_out "^sensor      x?samples     1?\[2J$" "info: the control characters sh
 if tr -d '\n' <"$T/out" | grep -q "$(printf '\033')"; then fail "info: an escape character printed"; else pass "info: no escape character printed"; fi
 expect_err "ctl.bin: the header's text holds 2 control characters or bytes that are not UTF-8 (read as '?')" \
     "info: the control characters warned of"
+# one such byte (a sensor name saved in Latin-1): the warning in the singular ("that is", not "that are")
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+b[24:56] = b"caf\xe9".ljust(32, b"\0")
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/l1.bin"
+expect_exit 0 "info of a .bin whose sensor name holds a Latin-1 byte" "$H" info "$T/l1.bin"
+expect_out "^sensor      caf?$" "info: the Latin-1 byte shown as '?'"
+expect_err "l1.bin: the header's text holds 1 control character or byte that is not UTF-8 (read as '?')" \
+    "info: one byte warned of in the singular"
 printf '// MT Manager\n// ProductCode: MTi\033[31m-1\n// Update Rate: 100Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n1\t0\t0\t9.8\t0\t0\t0\n2\t0\t0\t9.8\t0\t0\t0\n' >"$T/mt.txt"
 expect_exit 0 "info of an MT Manager export whose ProductCode holds an escape" "$H" info "$T/mt.txt"
 expect_out "^sensor      Xsens MTi?\[31m-1$" "info: the ProductCode's escape shown as '?'"
