@@ -2355,8 +2355,8 @@ static int write_plot(const run_t *R, const char *path)
     return hx_plot_close(&p, CMD);
 }
 
-/* Whether a profile name is one line of printable text (no control
- * character, hx_control_len: the profile reader refuses one). */
+/* Whether a profile name is one line of printable UTF-8 text (nothing
+ * hx_text_char shows as '?': the profile reader refuses such a name). */
 static int name_printable(const char *s)
 {
     while (*s != '\0') {

@@ -330,7 +330,7 @@ void hx_line_break(void)
 }
 
 /* A message's text to standard error with each control character
- * (hx_control_len) as '?': a path or a field that a message quotes is the
+ * (or byte that is not UTF-8; hx_text_char) as '?': a path or a field that a message quotes is the
  * text of a file name or a file, and an escape sequence in it (ESC ]0;...
  * sets the terminal's title, CSI clears it) must not reach the terminal
  * as one; no message of the harness holds a control character of its

@@ -350,8 +350,9 @@ size_t hx_text_char(const char *s, int *control);
  *  shows it as '?', else 0. */
 size_t hx_control_len(const char *s);
 
-/** `s` as one line of text, each control character (a line break, a tab;
- *  hx_control_len) a '?', cut to fit `buf`; returns buf. For a path in a comment line of a
+/** `s` as one line of text, each character hx_text_char shows as '?' (a
+ *  line break, a tab, a byte that is not UTF-8) a '?', cut to fit `buf`
+ *  at a character's start (never inside a UTF-8 letter); returns buf. For a path in a comment line of a
  *  CSV (`# harness psd: PATH; ...`), which a line break split in two. */
 const char *hx_line_str(char *buf, size_t size, const char *s);
 

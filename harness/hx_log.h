@@ -422,8 +422,9 @@ char *hx_gzgets(gzFile gz, char *buf, int size, size_t *len, int *nul);
 #define HX_CR_ALONE_HINT                                                                                      \
     " (its lines end in a carriage return alone, the old Mac OS convention: convert them, e.g. tr '\\r' '\\n')"
 
-/** Replaces the control characters of s (hx_control_len: ASCII's, and
- *  C1's in UTF-8) with '?' in place, one '?' for each (the text may get
+/** Replaces the characters of s that hx_text_char shows as '?' (ASCII's
+ *  controls, C1's in UTF-8, and each byte of no well-formed UTF-8
+ *  character) with '?' in place, one '?' for each (the text may get
  *  shorter); returns how many there were. The text of a file that a
  *  message or a report shows (a .bin header's, a quoted field) goes
  *  through it, so that it cannot reach the terminal as an escape
