@@ -326,7 +326,8 @@ void hx_json_num(struct cJSON *o, const char *k, double v);
 const char *hx_gp_str(char *buf, size_t size, const char *s);
 
 /** printf to standard error with each control character of the text
- *  (hx_control_len) written as '?' but a line end that ends it, as
+ *  (or byte that is not UTF-8; hx_text_char) written as '?' but a line
+ *  end that ends it, as
  *  hx_error and hx_warn write theirs: for a line that quotes a path or a
  *  file's text outside those (merge's account of a file). */
 void hx_eprintf(const char *fmt, ...)
