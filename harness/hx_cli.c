@@ -1312,13 +1312,6 @@ size_t hx_text_char(const char *s, int *control)
     return n;
 }
 
-size_t hx_control_len(const char *s)
-{
-    int ctl;
-    const size_t n = hx_text_char(s, &ctl);
-    return ctl ? n : 0u;
-}
-
 const char *hx_line_str(char *buf, size_t size, const char *s)
 {
     size_t o = 0;

@@ -347,9 +347,6 @@ void hx_eprintf(const char *fmt, ...)
  *  keys and name); a loop over text steps by the length it returns. */
 size_t hx_text_char(const char *s, int *control);
 
-/** The length in bytes of the character s starts with if hx_text_char
- *  shows it as '?', else 0. */
-size_t hx_control_len(const char *s);
 
 /** `s` as one line of text, each character hx_text_char shows as '?' (a
  *  line break, a tab, a byte that is not UTF-8) a '?', cut to fit `buf`
