@@ -311,6 +311,9 @@ int hx_cmd_convert(int argc, char **argv)
         if (hx_arg(&a, "--start") != NULL || hx_arg(&a, "--end") != NULL) {
             hx_error("convert", "%s (the %ld sample%s of the window before it %s written, of %ld read)",
                      hx_reader_error(r), kept, kept == 1 ? "" : "s", kept == 1 ? "was" : "were", n);
+        } else if (n == 0) {
+            /* not "no samples (the 0 samples before it were written)" */
+            hx_error("convert", "%s (the output holds no sample)", hx_reader_error(r));
         } else {
             hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n,
                      n == 1 ? "" : "s", n == 1 ? "was" : "were");

@@ -144,6 +144,10 @@ expect_err "(the 100 samples of the window before it were written, of 200 read)"
 [ "$(wc -l <"$T/w1.csv")" -eq 101 ] && pass "convert: the 100 samples written" || fail "convert: $(wc -l <"$T/w1.csv") lines written, expected 101"
 expect_exit 1 "convert without a window of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w2.csv"
 expect_err "(the 200 samples before it were written)" "convert: without a window, the samples read are those written"
+# a header and no sample: said once, not "no samples (the 0 samples before it were written)" (a mutation sweep)
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/hdr_only.csv"
+expect_exit 1 "convert of a log with its header alone" "$H" convert "$T/hdr_only.csv" "$T/w3.csv"
+expect_err "hdr_only.csv: no samples (the output holds no sample)$" "convert: no sample read, said without a count of 0"
 # a .bin written from an input read up to an error had its END record, so
 # that every later reader took it as whole (info exit 0, complete): now it
 # is left without END, as a killed writer leaves it, with or without --rate
