@@ -160,7 +160,7 @@ json "$T/csens.json" 'j["sensitivity"] and all(e["dc"] in ("none", "exclude") an
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
      printf "%.6f,%.6f,%.6f,%.6f,0,0,0\n", t, s, s, -9.81 + s } }' >"$T/gconst.csv"
 expect_exit 0 "constant gyroscopes" "$H" psd "$T/gconst.csv" --json "$T/gconst.json" --dc global
-expect_err "no gyroscope axis has power" "a group without power is said"
+expect_err "^harness psd: warning: $T/gconst.csv: no gyroscope axis has power" "a group without power is said, naming the log"
 expect_out "gyroscopes:     no power on any axis (left out)" "constant gyroscopes: their summary line says so, not '-> 0 Hz'"
 expect_exit 0 "constant gyroscopes, --sensitivity" "$H" psd "$T/gconst.csv" --dc global --sensitivity
 grep -E -q "^  global +64 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +- +- +- +250 +- +250$" "$T/out" &&
@@ -330,7 +330,8 @@ done
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
 head -101 "$T/tone.csv" >"$T/short.csv"
 expect_exit 0 "log shorter than the spectrogram segment, --plot" "$H" psd "$T/short.csv" --plot "$T/shortplots"
-expect_err "fewer samples (100) than one spectrogram segment (--spec-nfft 256)" "the missing spectrogram is explained"
+expect_err "^harness psd: warning: $T/short.csv: fewer samples (100) than one spectrogram segment (--spec-nfft 256)" \
+    "the missing spectrogram is explained, naming the log"
 [ -s "$T/shortplots/psd.png" ] && [ -s "$T/shortplots/ccdf.png" ] && pass "short log: psd.png, ccdf.png" ||
     fail "short log: psd.png or ccdf.png missing"
 [ ! -e "$T/shortplots/spectrogram.png" ] && pass "short log: no spectrogram.png" || fail "short log: spectrogram.png written"
@@ -363,7 +364,8 @@ done
 # is nothing, and a blank spectrogram.png is not written without a word; not drawn, said
 head -301 "$T/tone.csv" >"$T/oneseg.csv"
 expect_exit 0 "log of one spectrogram segment, --plot" "$H" psd "$T/oneseg.csv" --plot "$T/oneplots"
-expect_err "one spectrogram segment (300 samples, --spec-nfft 256 needs 384 for two)" "the missing spectrogram is explained"
+expect_err "^harness psd: warning: $T/oneseg.csv: one spectrogram segment (300 samples, --spec-nfft 256 needs 384 for two)" \
+    "the missing spectrogram is explained, naming the log"
 [ -s "$T/oneplots/psd.png" ] && [ ! -e "$T/oneplots/spectrogram.png" ] && pass "one segment: psd.png, no blank spectrogram.png" ||
     fail "one segment: $(ls "$T/oneplots")"
 # a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
