@@ -416,7 +416,7 @@ expect_out_re "^  lowest usable sampling frequency: 50 Hz \(.*\), only a lower b
 expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
 expect_out_re "^  lowest usable sampling frequency: 2000 Hz \([^)]*\) \(--dc segment[^)]*\)$" \
     "--round 2000: the band ends inside the log's, the answer is no lower bound"
-expect_err "is above the log's own rate (1000 Hz) only through the rounding to multiples of 2000 Hz" \
+expect_err "^harness psd: warning: $T/tone.csv: the answer (2000 Hz) is above the log's own rate (1000 Hz) only through the rounding to multiples of 2000 Hz" \
     "an answer above the rate by the rounding alone is said so"
 ! grep -q "near the Nyquist" "$T/err" && pass "--round 2000: a 115 Hz band is not called near the 500 Hz Nyquist frequency" ||
     fail "--round 2000: a 115 Hz band called near the Nyquist frequency"
