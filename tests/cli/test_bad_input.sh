@@ -103,11 +103,14 @@ grep -q "uncompressed" "$T/err" && fail "convert to x.csv warned of a .gz: $(cat
 # characters: printed raw by info, a sensor name "x<LF>samples 1" would forge
 # a line of info's report and an escape sequence reach the terminal. They
 # are read as '?', with a warning.
-"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
-b = bytearray(open(sys.argv[1], "rb").read())
-b[24:56] = b"x\nsamples     1\x1b[2J".ljust(32, b"\0")
+bin_sensor() { # bin_sensor OUT BYTES: vectors/walk.bin with its sensor name BYTES (a Python bytes literal), the header CRC made again
+    "${PY:-/usr/bin/python3}" -c 'import ast, struct, sys, zlib
+b = bytearray(open("vectors/walk.bin", "rb").read())
+b[24:56] = ast.literal_eval(sys.argv[2]).ljust(32, b"\0")
 struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
-open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/ctl.bin"
+open(sys.argv[1], "wb").write(b)' "$1" "$2"
+}
+bin_sensor "$T/ctl.bin" 'b"x\nsamples     1\x1b[2J"'
 expect_exit 0 "info of a .bin whose sensor name holds a newline and an escape" "$H" info "$T/ctl.bin"
 expect_out "^sensor      x?samples     1?\[2J$" "info: the control characters shown as '?'"
 [ "$(grep -c '^samples' "$T/out")" -eq 1 ] && pass "info: no forged line" || fail "info: a forged line: $(grep '^samples' "$T/out")"
@@ -115,11 +118,7 @@ if tr -d '\n' <"$T/out" | grep -q "$(printf '\033')"; then fail "info: an escape
 expect_err "ctl.bin: the header's text holds 2 control characters or bytes that are not UTF-8 (read as '?')" \
     "info: the control characters warned of"
 # one such byte (a sensor name saved in Latin-1): the warning in the singular ("that is", not "that are")
-"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
-b = bytearray(open(sys.argv[1], "rb").read())
-b[24:56] = b"caf\xe9".ljust(32, b"\0")
-struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
-open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/l1.bin"
+bin_sensor "$T/l1.bin" 'b"caf\xe9"'
 expect_exit 0 "info of a .bin whose sensor name holds a Latin-1 byte" "$H" info "$T/l1.bin"
 expect_out "^sensor      caf?$" "info: the Latin-1 byte shown as '?'"
 expect_err "l1.bin: the header's text holds 1 control character or byte that is not UTF-8 (read as '?')" \
