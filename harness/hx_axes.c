@@ -24,7 +24,8 @@
 #define MARGIN_MPS 0.2
 #define STILL_S 0.5       /* the start: the stillest stance sample of the stance's last 0.5 s */
 #define TILT_S 0.01       /* its tilt: the specific force over the 10 ms up to it */
-#define CYCLE_FRAC 0.025  /* a stance: a ZUPT run of 0.025 gait cycles or more (min_run_s) */
+/* a stance: a ZUPT run of the navigator's default min_zupt_cycle (0.025) gait cycles or more (min_run_s) */
+#define CYCLE_FRAC ((double)fnav_nav_config_default.stance.min_zupt_cycle)
 #define RUNS 3            /* the lock-in guard: the shortest run at most half the longest of the last 3 */
 
 static const char NOT_CHECKED_OOM[] = "not checked: out of memory";

@@ -135,10 +135,10 @@ static long name_control(const char *s)
 /* What the character name_control() found at s is, for its message */
 static const char *name_bad_what(const char *s)
 {
-    const unsigned char c = (unsigned char)s[0];
-    return c < 0x80u || (c == 0xc2u && (unsigned char)s[1] >= 0x80u && (unsigned char)s[1] <= 0x9fu)
-               ? "a control character"
-               : "a byte that is not UTF-8 text";
+    int ctl;
+    /* hx_text_char's '?' of two bytes is a C1 control; of one, an ASCII control or a byte of no character */
+    return hx_text_char(s, &ctl) == 2u || (unsigned char)s[0] < 0x80u ? "a control character"
+                                                                       : "a byte that is not UTF-8 text";
 }
 
 static char *trim(char *s)
