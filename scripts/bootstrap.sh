@@ -9,7 +9,7 @@ set -eu
 PACKAGES="make gcc g++ libc6-dev pkg-config git ca-certificates \
   libcmocka-dev libgsl-dev libserialport-dev libcjson-dev zlib1g-dev \
   gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm \
-  gnuplot-nox socat python3 python3-numpy python3-scipy python3-matplotlib"
+  gnuplot-nox socat python3 python3-numpy python3-scipy"
 case "${1:-}" in
     --ci) PACKAGES="$PACKAGES valgrind cppcheck clang clang-tidy libclang-rt-14-dev" ;;
     "") ;;
