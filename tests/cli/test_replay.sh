@@ -458,7 +458,8 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
 # within 1 deg (0.2 observed): it depends neither on the Euler yaw of an x
-# axis that has none (that would give -3041.6 deg against -339.4) nor on
+# axis that has none (that gave -3041.6 deg against -339.4 on 2026-11-27;
+# the heading change reads -337.0 today: replay --json of walk.bin as CSV) nor on
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
