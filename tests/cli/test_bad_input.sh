@@ -131,6 +131,20 @@ expect_err "mt.txt: the ProductCode holds control characters or bytes that are n
 expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
 grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
 
+# --- a .bin header whose CRC is right but whose rate is outside [0, 1e6]
+# (docs/log-format.md, "Header"): a negative rate and a NaN are refused as 2e6
+# is (tests/test_log.c), naming the file, exit 1; 0 is "unknown", read (lib.sh's
+# bin_rate, which also marks the rate nominal)
+bin_rate vectors/walk.bin "$T/rneg.bin" -1
+expect_exit 1 "info of a .bin whose header rate is -1 Hz" "$H" info "$T/rneg.bin"
+expect_err "rneg.bin: header: sample rate -1 Hz is not in \[0, 1e6\]" "a negative header rate refused, the file named"
+bin_rate vectors/walk.bin "$T/rnan.bin" nan
+expect_exit 1 "info of a .bin whose header rate is NaN" "$H" info "$T/rnan.bin"
+expect_err "rnan.bin: header: sample rate nan Hz is not in \[0, 1e6\]" "a NaN header rate refused"
+bin_rate vectors/walk.bin "$T/r0.bin" 0
+expect_exit 0 "info of a .bin whose header rate is 0 (unknown)" "$H" info "$T/r0.bin"
+expect_out "^rate  *398.3[0-9]* Hz (from the time stamps" "a header rate of 0: the rate from the stamps"
+
 # --- convert --start/--end over an input with a bad line: the error does not
 # count the samples read as written ("the 200 samples before it were written"
 # when --start 2.5 kept none of them and the output holds its header alone).
