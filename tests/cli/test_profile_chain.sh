@@ -226,6 +226,13 @@ printf '%s\nrate_hz = 100\nrate_hz = 200\n' "$HDR" >"$T/bad.profile"
 bad_profile "with rate_hz twice" "bad.profile:3: rate_hz given twice"
 printf '%s\nrate_hz = 1e7\n' "$HDR" >"$T/bad.profile"
 bad_profile "with rate_hz out of range" "bad.profile:2: rate_hz '1e7' outside \[1, 1e+06\] (an IMU's output rate)"
+# a rate that is no positive number is not taken as out of range or as 0 (docs/profile-format.md, "Errors")
+for v in 0 -200 200Hz; do
+    printf '%s\nrate_hz = %s\n' "$HDR" "$v" >"$T/bad.profile"
+    bad_profile "with rate_hz = $v" "bad.profile:2: rate_hz '$v' is not a positive number"
+done
+rm -f "$T/bad.profile"
+bad_profile "that does not exist" "bad.profile: cannot open profile (No such file or directory)"
 printf '%s\nrate_hz = 100\nrate 100\n' "$HDR" >"$T/bad.profile"
 bad_profile "with a line without '='" "bad.profile:3: expected 'key = value'"
 printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100\n' "$HDR" >"$T/bad.profile"
@@ -305,6 +312,13 @@ expect_err "warning: $T/unk.profile:13: unknown key 'gyro_nosie' ignored (did yo
 expect_err "unk.profile:14: unknown key 'Name' ignored (did you mean name?)" "Name: did you mean name"
 [ "$(grep -c "unknown key" "$T/err")" -eq 2 ] && pass "x_, ident_ and paper_ keys: no warning" ||
     fail "unknown-key warnings: $(cat "$T/err")"
+# an unknown key near no known one: the warning says how to keep a key of one's own; tabs around a key and its
+# values are blanks (docs/profile-format.md, "Format" and "Optional keys")
+{ sed 's/^gyro_tau_s = \(.*\)/gyro_tau_s\t=\t\1\t/' "$T/ds.profile"; printf 'colour = red\n'; } >"$T/own.profile"
+expect_exit 0 "replay with a key of no known spelling and a tab-separated line" "$H" replay vectors/walk.bin --quiet \
+    --profile "$T/own.profile"
+expect_err "own.profile:13: unknown key 'colour' ignored (a key of your own starts with x_)$" \
+    "an unknown key near no known one: x_ named"
 expect_exit 0 "montecarlo with unknown keys in the profile" "$H" montecarlo --seeds 2 --duration 5 --quiet \
     --profile "$T/unk.profile"
 [ "$(grep -c "unknown key 'gyro_nosie'" "$T/err")" -eq 1 ] && pass "montecarlo: the unknown key warned about once" ||
