@@ -292,7 +292,7 @@ static void test_file_round_trip(void **state)
     assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     assert_non_null(strstr(err, "rate_hz given twice"));
     /* a noise key given twice too, and rate_hz above 1e6 Hz
-     * (profile-format.md: (0, 1e6]); 1e6 itself is taken. A rate written
+     * (profile-format.md: [1, 1e6]); 1e6 itself is taken. A rate written
      * at full float precision reads back exactly (%.9g: 9 digits carry any
      * float). Hand-made mutants dropping the twice check for noise keys, the
      * 1e6 bound or writing rate_hz with 4 digits passed every suite (fail
