@@ -3213,8 +3213,8 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
             }
             if (r->have_prev && rec.t_ns < r->prev_t_ns) {
                 char a[32], b[32];
-                set_err(r, "%s: record #%ld: time goes backwards (%s s after %s s)", r->path, r->record_slot,
-                        ns_text(rec.t_ns, a, sizeof a), ns_text(r->prev_t_ns, b, sizeof b));
+                set_err(r, "%s: record #%ld at byte %lld: time goes backwards (%s s after %s s)", r->path,
+                        r->record_slot, r->offset, ns_text(rec.t_ns, a, sizeof a), ns_text(r->prev_t_ns, b, sizeof b));
                 return FNAV_E_TIME;
             }
             {

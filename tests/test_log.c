@@ -575,7 +575,9 @@ static void test_bin_bad_record_values(void **state)
     assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
     rec.t_ns = prev.t_ns - 1;
     hx_bin_record_encode(&rec, b + r3);
-    expect_bin(b, g_golden_n, 1, 3, FNAV_E_TIME, "time goes backwards");
+    /* named at its byte as every other record error (it was the one
+     * without: "record #3: time goes backwards") */
+    expect_bin(b, g_golden_n, 1, 3, FNAV_E_TIME, "record #3 at byte 336: time goes backwards");
 
     memcpy(b, g_golden, g_golden_n);
     assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
