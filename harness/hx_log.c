@@ -85,6 +85,9 @@ struct hx_reader {
     int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
     int hdr_fields;             /* fields of the header line (at most HX_MAX_COLS); 0: no header */
+    int unit_field;             /* blanks: the header's first field that is a unit alone, "(s)" of
+                                   "Time (s)" (names that hold blanks), 1-based; 0 none */
+    char unit_text[24];         /* ... its text, cut */
     int date_join;              /* blanks: -1 not yet known, 1 a date and its time one field, 0 not (the
                                    header names them apart: "date time ax ..."), by the first row */
     char time_beside[64];       /* adis, square2: a time-named column the format does not read, "" none */
@@ -490,6 +493,11 @@ const char *hx_decimal_mix_text(const hx_decimal_mix_t *m, const char *path, cha
 
 #define DECIMAL_COMMA_FIX "footnav reads numbers with a decimal point; export the log without the locale's decimal comma"
 #define DECIMAL_COMMA_HINT " (a decimal comma: " DECIMAL_COMMA_FIX ")"
+/* a header of names that hold blanks in a blank-separated file: the unit
+ * alone ("(s)") and its field (reader's unit_text, unit_field) */
+#define UNIT_ALONE_FIX                                                                                       \
+    "the fields are separated by blanks and the header's names hold blanks ('%s' is its field %d alone), "   \
+    "which cannot be told apart: separate the fields with commas or tabs"
 
 /* "not a number", and why when the field has a decimal comma */
 static const char *not_a_number(const char *field)
@@ -2088,6 +2096,17 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : hx_named_fields(f, n, total);
+    /* a unit alone between blanks ("Time (s) Gyroscope X (deg/s)", x-io's
+     * names with the commas made blanks): names that hold blanks, which a
+     * blank-separated file cannot tell from fields; named where the
+     * columns do not fit */
+    r->unit_field = 0;
+    for (i = 0; r->delim == ' ' && i < n && r->unit_field == 0; i++) {
+        if (f[i][0] == '(' || f[i][0] == '[') {
+            r->unit_field = i + 1;
+            copy_str(r->unit_text, sizeof r->unit_text, f[i]);
+        }
+    }
     if (r->meta.format == HX_FMT_CSV && !dc_line && all_numeric(f, n)) {
         const int h = numbered_columns(r, f, n, time_required);
         if (h != 0) {
@@ -2206,6 +2225,12 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         /* one sensor's file (a logger that writes the other to another
          * file): say how to make one log of the two */
         const int one = hx_tri_header_kind(f, n);
+        if (r->unit_field > 0) {
+            r->missing_col = -1; /* no detection hint: --columns cannot split such a header */
+            set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]; " UNIT_ALONE_FIX,
+                    r->path, r->stats.lines, names[i], r->unit_text, r->unit_field);
+            return -1;
+        }
         set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s%s%s", r->path,
                 r->stats.lines, names[i],
                 six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
@@ -2858,6 +2883,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         }
     }
     if (n < r->ncols_needed) {
+        if (r->unit_field > 0) {
+            set_err(r, "%s:%ld: %d column%s, expected at least %d; " UNIT_ALONE_FIX, r->path, r->stats.lines, n,
+                    n == 1 ? "" : "s", r->ncols_needed, r->unit_text, r->unit_field);
+            return FNAV_E_FORMAT;
+        }
         set_err(r, "%s:%ld: %d column%s, expected at least %d", r->path, r->stats.lines, n,
                 n == 1 ? "" : "s", r->ncols_needed);
         return FNAV_E_FORMAT;
@@ -3682,7 +3712,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         int e;
         (void)gzerror(r->gz, &e);
         snprintf(err, err_size, "%s: %s", path,
-                 e == Z_BUF_ERROR ? "the gzip data ends before any text (a truncated .gz, e.g. an incomplete copy)"
+                 e == Z_BUF_ERROR ? "the gzip data ends before any of it inflates (a truncated .gz, e.g. an incomplete copy)"
                                   : "empty file");
         gzclose(r->gz);
         free(r);

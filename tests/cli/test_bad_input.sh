@@ -787,6 +787,18 @@ for c in replay montecarlo; do
     else fail "$c: the profile file's name not shown"; fi
 done
 
+# names that hold blanks ("Time (s)") in a file whose fields are separated by blanks (x-io's header with its
+# commas made blanks) cannot be told apart: said so, with the remedy; not "a time and x, y, z alone (one
+# sensor's file? ... merge" (the header's lone X, Y, Z), nor "7 columns, expected at least 8" alone
+printf 'Time (s) Gyroscope X (deg/s) Gyroscope Y (deg/s) Gyroscope Z (deg/s) Accelerometer X (g) Accelerometer Y (g) Accelerometer Z (g)\n0 0.1 0.2 0.3 0 0 1\n0.0025 0.1 0.2 0.3 0 0 1\n' >"$T/ngblank.csv"
+expect_exit 1 "x-io's header separated by blanks refused" "$H" info "$T/ngblank.csv"
+expect_err "ngblank.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\]; the fields are separated by blanks and the header's names hold blanks ('(s)' is its field 2 alone), which cannot be told apart: separate the fields with commas or tabs$" \
+    "names holding blanks in a blank-separated header: said, with the remedy"
+printf 'Time [s] ax ay az gx gy gz\n0 0 0 9.8 0 0 0\n0.01 0 0 9.8 0 0 0\n' >"$T/tblank.csv"
+expect_exit 1 "a time name holding a blank in a blank-separated header refused" "$H" info "$T/tblank.csv"
+expect_err "tblank.csv:2: 7 columns, expected at least 8; the fields are separated by blanks and the header's names hold blanks ('\[s\]' is its field 2 alone)" \
+    "the row's short count said with its cause"
+
 # a message is written whole, not a character at a time: stderr is unbuffered, and the rule's first form wrote
 # each character by itself (a write(2) per byte, some 60 for this message; a parallel job's line into the same
 # log could split); now the prefix, the text and the line end (strace, where it runs)
