@@ -2182,6 +2182,15 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                                  "--input-rate HZ, or its time column with --columns t=NAME too",
                                  unit, give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
                     } else if (give[0] != '\0' || miss[0] != '\0') {
+                        if (strlen(miss) > 250) {
+                            /* more than the message holds (two devices'
+                             * candidates for every channel): cut after a
+                             * whole item and marked, not in a name */
+                            char *cut;
+                            miss[244] = '\0';
+                            cut = strrchr(miss, ';');
+                            snprintf(cut != NULL ? cut : miss + 244, 6, "; ...");
+                        }
                         snprintf(matched, sizeof matched, "%.290s; names matched: %.400s; not matched: %.250s", unit,
                                  give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
                     }

@@ -799,6 +799,18 @@ expect_exit 1 "a time name holding a blank in a blank-separated header refused" 
 expect_err "tblank.csv:2: 7 columns, expected at least 8; the fields are separated by blanks and the header's names hold blanks ('\[s\]' is its field 2 alone)" \
     "the row's short count said with its cause"
 
+# two Consensys devices in one file: every channel has two candidates, more than the refusal holds; the list is cut
+# after a whole item and marked "; ...", not inside a name (it ended "gx: 2 candidates (A_Gyr" before 2026-12-07)
+cols="Timestamp_Unix_CAL Accel_WR_X_CAL Accel_WR_Y_CAL Accel_WR_Z_CAL Gyro_X_CAL Gyro_Y_CAL Gyro_Z_CAL"
+{
+    hdr=""; for d in A B; do for c in $cols; do hdr="$hdr${hdr:+,}${d}_$c"; done; done; echo "$hdr"
+    echo "ms,m/(s^2),m/(s^2),m/(s^2),deg/s,deg/s,deg/s,ms,m/(s^2),m/(s^2),m/(s^2),deg/s,deg/s,deg/s"
+    echo "1595933810034.18,0.39,0.1,9.8,-2.75,0,0,1595933810034.18,0.39,0.1,9.8,-2.75,0,0"
+} > "$T/two_shimmers.csv"
+expect_exit 1 "two Consensys devices in one file" "$H" info "$T/two_shimmers.csv"
+expect_err "t: 2 candidates (A_Timestamp_Unix_CAL, B_Timestamp_Unix_CAL); .*; az: 2 candidates (A_Accel_WR_Z_CAL, B_Accel_WR_Z_CAL); ... (no importer's header recognised" \
+    "two devices' candidates: the list cut after a whole item, marked"
+
 # a message is written whole, not a character at a time: stderr is unbuffered, and the rule's first form wrote
 # each character by itself (a write(2) per byte, some 60 for this message; a parallel job's line into the same
 # log could split); now the prefix, the text and the line end (strace, where it runs)
