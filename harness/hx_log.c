@@ -1941,9 +1941,22 @@ static int data_follows(hx_reader_t *r)
  * time's too where a time is required (else --input-rate's). 1 applied
  * (a warning says so; the caller reads the line again as data), 0 not
  * numbers (the first line's error as before), -1 error (err set). */
+/* A line of whole numbers counting its columns, 0,1,2,... or 1,2,3,...
+ * (pandas' header of an array): its first number, else -1. */
+static long index_row_base(char **f, int n)
+{
+    char *end;
+    const long base = strtol(f[0], &end, 10);
+    int k, ok = n > 1 && (base == 0 || base == 1);
+    for (k = 0; k < n && ok; k++) {
+        ok = strtol(f[k], &end, 10) == base + k && *end == '\0' && end != f[k];
+    }
+    return ok ? base : -1;
+}
+
 static int numbered_columns(hx_reader_t *r, char **f, int n, int time_required)
 {
-    int k, given = 0, col[8], all_named = 1, index_row = 1, col_tns = -1;
+    int k, given = 0, col[8], all_named = 1, index_row, col_tns = -1;
     for (k = 0; k <= 8; k++) { /* 8: tns */
         const char *v = k < 8 ? r->layout.names[k] : r->layout.tns;
         if (v[0] != '\0' && (!isdigit((unsigned char)v[0]) || strspn(v, "0123456789") != strlen(v))) {
@@ -1951,15 +1964,7 @@ static int numbered_columns(hx_reader_t *r, char **f, int n, int time_required)
         }
         all_named &= v[0] == '\0' || hx_find_col(f, n, v) >= 0;
     }
-    {
-        /* 0,1,2,... or 1,2,3,...: whole numbers counting the columns */
-        char *end;
-        const long base = strtol(f[0], &end, 10);
-        index_row = n > 1 && (base == 0 || base == 1);
-        for (k = 0; k < n && index_row; k++) {
-            index_row = strtol(f[k], &end, 10) == base + k && *end == '\0' && end != f[k];
-        }
-    }
+    index_row = index_row_base(f, n) >= 0;
     if (all_named || index_row) {
         /* every number given is a field of the line (a header of numbers:
          * read by name, as before), or the line counts its columns from 0
@@ -2209,6 +2214,14 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         r->missing_col = -1;
         set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
                 r->path, r->stats.lines, dc_first);
+    } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0' && index_row_base(f, n) >= 0) {
+        /* pandas' header of an array, read by its names: --columns t=1,...
+         * counted from 1 where it counts from 0 (not told to give what it
+         * gave) */
+        const long base = index_row_base(f, n);
+        set_err(r, "%s:%ld: the header counts the columns from %ld (pandas' header of an array), and --columns names "
+                   "them as it does: %s=%s is not one of its names, %ld to %ld (the first column is %ld)",
+                r->path, r->stats.lines, base, what[i], names[i], base, base + n - 1, base);
     } else if (all_numeric(f, n)) {
         set_err(r, "%s:%ld: the first line is data, not a header: a log of format %s starts with its header (%s)%s",
                 r->path, r->stats.lines, hx_format_name(r->meta.format),

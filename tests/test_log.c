@@ -2487,6 +2487,12 @@ static void test_numbered_columns(void **state)
      * names lack 7: refused as before, not read with the header as a sample */
     assert_int_equal(read_mapped(p, "t=1,ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), -1);
     assert_true(strstr(ra.warn, "no header") == NULL && strstr(ra.err, ":1: ") != NULL);
+    /* ... saying how it counts (not "the first line is data ... give its
+     * columns by number, --columns t=1,...", what was given) */
+    if (strstr(ra.err, ":1: the header counts the columns from 0 (pandas' header of an array), and --columns names "
+                       "them as it does: gz=7 is not one of its names, 0 to 6 (the first column is 0)") == NULL) {
+        fail_msg("1..7 over a 0-based header: %s", ra.err);
+    }
     /* the nanoseconds by number too */
     write_text(p, "100,0,0,9.8,0,0,0,0\n100,0,0,9.8,0,0,0,10000000\n100,0,0,9.8,0,0,0,20000000\n");
     assert_int_equal(read_mapped(p, "t=1,tns=8,ax=2,ay=3,az=4,gx=5,gy=6,gz=7", 0.0, &ra), 0);
