@@ -385,7 +385,11 @@ int hx_split_fields(char *line, char delim, char **f, int max)
     return split(line, delim, f, max);
 }
 
-/* Strict number: the whole field must be a finite decimal number. */
+/* Strict number: the whole field must be a finite decimal number. -2 for
+ * NaN or Inf written as such; -3 for a decimal number beyond 1e300 (1e308,
+ * 400 digits: strtod makes the second Inf), *out then +-1e300 so that a
+ * caller's range check names it ("beyond 1e+06 in SI units"), not as "NaN
+ * or Inf", which it is not */
 static int parse_num(const char *s, double *out)
 {
     char *end;
@@ -398,8 +402,12 @@ static int parse_num(const char *s, double *out)
     if (end == s || *end != '\0') {
         return -1;
     }
-    if (v != v || v > 1.0e300 || v < -1.0e300) {
+    if (v != v || strpbrk(s, "nNiI") != NULL) {
         return -2;
+    }
+    if (v > 1.0e300 || v < -1.0e300) {
+        *out = v > 0.0 ? 1.0e300 : -1.0e300;
+        return -3;
     }
     *out = v;
     return 0;
@@ -2952,7 +2960,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         for (c = 0; c < 2; c++) {
             int col = c == 0 ? r->col_a[i] : r->col_g[i];
             int prc = parse_num(f[col], &v[c * 3 + i]);
-            if (prc != 0) {
+            if (prc != 0 && prc != -3) { /* -3 (1e308) is beyond the range below */
                 set_err(r, "%s:%ld: column %d ('%.20s') is %s", r->path, r->stats.lines, col + 1, f[col],
                         prc == -2 ? "NaN or Inf" : not_a_number(f[col]));
                 return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
@@ -2972,7 +2980,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
          * one for a .bin record whose temperature is not valid) */
         double tc;
         int prc = parse_num(f[r->col_temp], &tc);
-        if (prc != 0) {
+        if (prc != 0 && prc != -3) {
             set_err(r, "%s:%ld: temperature ('%.20s') is %s", r->path, r->stats.lines, f[r->col_temp],
                     prc == -2 ? "NaN or Inf" : not_a_number(f[r->col_temp]));
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
@@ -3032,12 +3040,12 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
          * within them, is out of range, not "not a non-negative number";
          * the range is the 32 bits of seq */
         const int prc = parse_num(f[r->col_t], &tv);
-        if (prc != 0 || tv < 0.0 || tv > 4294967295.0) {
+        if ((prc != 0 && prc != -3) || tv < 0.0 || tv > 4294967295.0) {
             set_err(r, "%s:%ld: counter ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
-                    prc == -2   ? "NaN or Inf"
-                    : prc != 0  ? not_a_number(f[r->col_t])
-                    : tv < 0.0  ? "negative"
-                                : "beyond 32 bits (4294967295)");
+                    prc == -2                 ? "NaN or Inf"
+                    : prc != 0 && prc != -3   ? not_a_number(f[r->col_t])
+                    : tv < 0.0                ? "negative"
+                                              : "beyond 32 bits (4294967295)");
             return FNAV_E_FORMAT;
         }
         if (r->meta.format == HX_FMT_IPOL && tv < 65536.0) {
@@ -3084,9 +3092,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         vals[2] = &host;
         for (k = 0; k < 3; k++) {
             const int prc = parse_num(f[cols[k]], vals[k]);
-            if (prc != 0) {
+            if (prc != 0 && !(prc == -3 && k < 2)) { /* a count beyond 1e300 is no 32-bit count, said below */
                 set_err(r, "%s:%ld: %s ('%.20s') is %s", r->path, r->stats.lines, gx2_names[k], f[cols[k]],
-                        prc == -2 ? "NaN or Inf" : not_a_number(f[cols[k]]));
+                        prc == -2   ? "NaN or Inf"
+                        : prc == -3 ? "beyond 1e+300 s"
+                                    : not_a_number(f[cols[k]]));
                 return FNAV_E_FORMAT;
             }
         }

@@ -543,6 +543,19 @@ expect_out_re "^samples     2$" "two samples kept"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,nan\n' >"$T/nan.csv"
 expect_exit 1 "NaN in CSV" "$H" info "$T/nan.csv"
 expect_err "nan.csv:2: column 7 ('nan') is NaN or Inf" "NaN names file, line and column"
+# a decimal number past 1e300 is finite (1e308) or past a double (400 nines,
+# which strtod makes Inf): beyond the range a sensor reads, not "NaN or Inf"
+# (what a CLI mutation sweep's 1e308 was called)
+n400=$(awk 'BEGIN { for (i = 0; i < 400; i++) printf "9" }')
+for big in 1e308 "-$n400"; do
+    bigname=$big; [ "$big" = 1e308 ] || bigname="minus 400 nines"
+    printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0,0,-9.8,%s,0,0\n' "$big" >"$T/big.csv"
+    expect_exit 1 "a value of $bigname in CSV" "$H" info "$T/big.csv"
+    expect_err "big.csv:3: column 5 ('[-0-9e]*') is beyond 1e+06 in SI units (no sensor reads that)" "$bigname: beyond a sensor's range, not NaN or Inf"
+done
+printf 'Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n0\t0\t0\t9.8\t0\t0\t0\n1e308\t0\t0\t9.8\t0\t0\t0\n' >"$T/bigctr.txt"
+expect_exit 1 "ipol: a counter of 1e308" "$H" info "$T/bigctr.txt" --from ipol
+expect_err "bigctr.txt:4: counter ('1e308') is beyond 32 bits" "ipol: a counter of 1e308 beyond 32 bits, not NaN or Inf"
 # a bad line after good ones: the reader's message once (the warning when it is read), then one closing error
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\nbad,line\n' >"$T/badline.csv"
 expect_exit 1 "a bad line after two samples" "$H" info "$T/badline.csv"
