@@ -846,10 +846,14 @@ int hx_cmd_psd(int argc, char **argv)
         while ((size_t)fit * 2u <= log.n) {
             fit *= 2u;
         }
-        if (log.n >= 8u) {
+        /* not "--nfft 8 or less" (--nfft 4 is refused), nor "(--nfft 8)"
+         * to a log of fewer samples, which that option does not help */
+        if (log.n >= 16u) {
             snprintf(fix, sizeof fix, "give --nfft %u or less (a power of two)", fit);
+        } else if (log.n >= 8u) {
+            snprintf(fix, sizeof fix, "give --nfft 8 (the least)");
         } else {
-            snprintf(fix, sizeof fix, "a Welch segment needs at least 8 samples (--nfft 8)");
+            snprintf(fix, sizeof fix, "a Welch segment needs at least 8 samples: the log is too short for a spectrum");
         }
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */

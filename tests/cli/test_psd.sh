@@ -446,7 +446,11 @@ expect_err "sample rate unknown: every time stamp is the same" "a bad line after
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
 expect_err "1 sample, fewer than one 64-sample segment" "one sample: too short for a segment (singular)"
-expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples" "one sample: the least a segment needs"
+expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples: the log is too short for a spectrum$" "one sample: the least a segment needs, and no --nfft offered (none helps)"
+# 11 samples: --nfft 8, the least, not "--nfft 8 or less" (--nfft 4 is refused)
+head -12 "$T/same.csv" | awk -F, 'NR == 1 { print; next } { $1 = (NR - 2) / 100; print }' OFS=, >"$T/eleven.csv"
+expect_exit 1 "11 samples" "$H" psd "$T/eleven.csv"
+expect_err "eleven.csv: 11 samples, fewer than one 64-sample segment; give --nfft 8 (the least)$" "11 samples: --nfft 8, not '8 or less'"
 # 1001 samples with --nfft 4096: the error says what to do, not only what is missing
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 1001; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/k1.csv"
 expect_exit 1 "1001 samples, --nfft 4096" "$H" psd "$T/k1.csv" --nfft 4096
