@@ -3170,7 +3170,10 @@ int hx_cmd_allan(int argc, char **argv)
         m_dropped(R);
     }
     if (input_rc > 0) {
-        hx_warn(CMD, "analysing the %lu sample%s before the error", (unsigned long)R->n, R->n == 1 ? "" : "s");
+        /* the log named, as each of allan's warnings about it is (after the
+         * reader's error, its warnings about the samples can come between) */
+        hx_warn(CMD, "%s: analysing the %lu sample%s before the error", path, (unsigned long)R->n,
+                R->n == 1 ? "" : "s");
         exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
 

@@ -98,6 +98,8 @@ expect_err "takes no other option (--json)" "paper tables name the option they d
 awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } print "oops" }' >"$T/bad.txt"
 expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
 grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
+# the closing warning names the file too, as allan's others (it named none)
+expect_err "warning: .*bad.txt: analysing the 3000 samples before the error" "what is analysed after a bad line: the file named"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
 # --json says so, as info's, replay's, psd's and simgap's: complete false and
 # the reader's error (not neither), and a log read to its end complete true
