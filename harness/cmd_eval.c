@@ -2753,8 +2753,8 @@ int hx_cmd_eval(int argc, char **argv)
     hx_progress_end(&ev.prog);
     hx_warn_once(0);
     if (hx_warn_repeats() > 0) {
-        fprintf(stderr, "harness eval: note: %ld warning(s) and note(s) repeated by the walks' later runs, printed once\n",
-                hx_warn_repeats());
+        fprintf(stderr, "harness eval: note: %ld %s repeated by the walks' later runs, printed once\n",
+                hx_warn_repeats(), hx_warn_repeats() == 1 ? "warning or note" : "warnings and notes");
     }
     if (ev.md != stdout) {
         /* a write that failed on the way (ferror) or at the close: said
@@ -2804,8 +2804,19 @@ int hx_cmd_eval(int argc, char **argv)
         return HX_EXIT_IO;
     }
     if (ev.failures > 0) {
-        hx_error("eval", "%d run(s) failed, and %d of the experiments' runs (see the warnings); results are incomplete",
-                 ev.main_failures, ev.failures - ev.main_failures);
+        /* the experiments' count only when some of their runs failed (with
+         * --no-experiments it read "1 run(s) failed, and 0 of the
+         * experiments' runs") */
+        const int exp_failed = ev.failures - ev.main_failures;
+        char runs[40] = "", also[80] = "";
+        if (ev.main_failures > 0) {
+            snprintf(runs, sizeof runs, "%d run%s", ev.main_failures, ev.main_failures == 1 ? "" : "s");
+        }
+        if (exp_failed > 0) {
+            snprintf(also, sizeof also, "%s%d of the experiments' runs", ev.main_failures > 0 ? ", and " : "",
+                     exp_failed);
+        }
+        hx_error("eval", "%s%s failed (see the warnings); the results are incomplete", runs, also);
         return HX_EXIT_DATA;
     }
     return HX_EXIT_OK;

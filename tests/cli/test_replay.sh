@@ -2001,7 +2001,9 @@ if [ -n "$D" ]; then
     printf '{"TrialBoundaries": [459, 2464],\n "LeftFootEvents": [[527, 574],, [641, 687]], "RightFootEvents": []}\n' \
         > "$T/bad/ipol_gait_xsens/1-4.json"
     expect_exit 1 "eval with walks that give no figures" "$H" eval --no-experiments --data "$T/bad" --out "$T/bad.md" --json "$T/bad.json"
-    expect_err "8 run(s) failed" "eval counts the runs without figures"
+    # in words, without "run(s)" or "and 0 of the experiments' runs" under
+    # --no-experiments (a CLI mutation sweep's reading)
+    expect_err "error: 8 runs failed (see the warnings); the results are incomplete$" "eval counts the runs without figures"
     if grep -q "| Measurement_100521_98 | - |.*| not run: empty file |" "$T/bad.md"; then pass "an empty walk keeps its row"; else fail "empty walk row: $(grep 98 "$T/bad.md")"; fi
     if grep -q "| SensorConnectData_31 | - |.*| not run: no truth file SensorConnectData_31_strides_gcp.csv |" "$T/bad.md"; then
         pass "a walk without its truth keeps its row"; else fail "walk without truth: $(grep SensorConnectData_31 "$T/bad.md")"; fi
@@ -2020,6 +2022,19 @@ if [ -n "$D" ]; then
         pass "results.md and the JSON say the results are incomplete"; else fail "failure count not reported"; fi
     bad=$(md_bad_rows "$T/bad.md")
     if [ -z "$bad" ]; then pass "not-run rows keep the tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
+    # one run failed: in the singular
+    mkdir -p "$T/one/openshoe_gx2"
+    : > "$T/one/openshoe_gx2/Measurement_100521_98_data_inert.txt"
+    expect_exit 1 "eval with one walk that gives no figures" "$H" eval --no-experiments --data "$T/one" --out "$T/one.md"
+    expect_err "error: 1 run failed (see the warnings); the results are incomplete$" "eval: one failed run in the singular"
+    # one warning repeated (the other foot's run of a trial whose events file
+    # is cut short): "1 warning or note", not "1 warning(s) and note(s)"
+    mkdir -p "$T/rep/ipol_gait_xsens"
+    cp "$D/ipol_gait_xsens/1-1_lf.txt" "$D/ipol_gait_xsens/1-1_rf.txt" "$T/rep/ipol_gait_xsens/"
+    echo '{"TrialBoundaries": [459, 2464], "LeftFootEvents": [[527' > "$T/rep/ipol_gait_xsens/1-1.json"
+    expect_exit 1 "eval with a trial's events file cut short" "$H" eval --no-experiments --data "$T/rep" --out "$T/rep.md"
+    expect_err "note: 1 warning or note repeated by the walks' later runs, printed once" "eval: one repeat in the singular"
+    expect_err "error: 2 runs failed (see the warnings); the results are incomplete$" "eval: both feet's runs counted"
     # ipol scoring (trial 1-1 alone): the reference row, then three edits
     ipol_dir() { mkdir -p "$T/$1/ipol_gait_xsens"; cp "$D/ipol_gait_xsens/1-1"* "$T/$1/ipol_gait_xsens/"; }
     ipol_row() { "$H" eval --no-experiments --data "$T/$1" --out "$T/$1.md" > /dev/null 2>&1; grep "^| 1-1 | $2 |" "$T/$1.md"; }
