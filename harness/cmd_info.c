@@ -673,9 +673,10 @@ int hx_cmd_info(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (log.status != FNAV_END) {
-        /* the reader's message was warned when the input was read (hx_load_input()) */
-        hx_error("info", "incomplete input (warned above): the results cover the %zu sample%s before the error", log.n,
-                 log.n == 1 ? "" : "s");
+        /* the reader's message was warned when the input was read
+         * (hx_load_input()); the log named, as in that warning */
+        hx_error("info", "%s: incomplete input (warned above): the results cover the %zu sample%s before the error",
+                 a.pos[0], log.n, log.n == 1 ? "" : "s");
     }
     hx_log_free(&log);
     return exit_code;

@@ -1207,9 +1207,10 @@ int hx_cmd_psd(int argc, char **argv)
         }
     }
     if (log.status != FNAV_END) {
-        /* the reader's message was warned when the input was read (hx_load_input()) */
-        hx_error(CMD, "incomplete input (warned above): the results cover the %zu sample%s before the error", log.n,
-                 log.n == 1 ? "" : "s");
+        /* the reader's message was warned when the input was read
+         * (hx_load_input()); the log named, as in that warning */
+        hx_error(CMD, "%s: incomplete input (warned above): the results cover the %zu sample%s before the error",
+                 a.pos[0], log.n, log.n == 1 ? "" : "s");
     }
     hx_log_free(&log);
     return exit_code;

@@ -560,6 +560,7 @@ expect_err "bigctr.txt:4: counter ('1e308') is beyond 32 bits" "ipol: a counter 
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\nbad,line\n' >"$T/badline.csv"
 expect_exit 1 "a bad line after two samples" "$H" info "$T/badline.csv"
 expect_err "incomplete input (warned above): the results cover the 2 samples before the error" "closing error says what the report covers"
+expect_err "error: .*badline.csv: incomplete input (warned above)" "the closing error names the log (it named none)"
 [ "$(grep -c 'badline.csv:4: 2 columns' "$T/err")" -eq 1 ] && pass "the bad line is named once on stderr" ||
     fail "the bad line named $(grep -c 'badline.csv:4: 2 columns' "$T/err") times"
 printf 't,ax,ay,az\n0,0,0,-9.8\n' >"$T/cols.csv"

@@ -569,6 +569,8 @@ awk 'BEGIN { srand(2); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) {
 expect_exit 1 "psd of a log with a NaN half way, --json" "$H" psd "$T/nanrow.csv" --json "$T/nanrow.json"
 json "$T/nanrow.json" 'j["complete"] is False and j["error"].endswith("nanrow.csv:1502: column 5 (\x27nan\x27) is NaN or Inf") and j["samples"] == 1500' &&
     pass "psd --json of a cut log: complete false, the reader's error" || fail "psd --json of a cut log: $(tr -d '\n\t' <"$T/nanrow.json" | tail -c 300)"
+expect_err "error: .*nanrow.csv: incomplete input (warned above): the results cover the 1500 samples before the error" \
+    "psd of a cut log: the closing error names the log (it named none)"
 expect_exit 0 "psd of a whole log, --json" "$H" psd vectors/walk.bin --json "$T/whole.json"
 json "$T/whole.json" 'j["complete"] is True and "error" not in j' && pass "psd --json of a whole log: complete true, no error" ||
     fail "psd --json of a whole log: $(tr -d '\n\t' <"$T/whole.json" | tail -c 200)"
