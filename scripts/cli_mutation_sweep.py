@@ -177,6 +177,10 @@ def record(a, d, argv, what, rc, err):
 
 def sweep_commands(a, rng):
     srcs = sources(a.data)
+    if not srcs:
+        # not an IndexError from random.choice (a clone outside the
+        # repository's parent directory finds no ../shared/data)
+        sys.exit("no recording of any data set under %s: give --data DIR or set FNAV_DATA_DIR" % a.data)
     bad = 0
     for c in range(a.cases):
         name, lines = rng.choice(srcs)
