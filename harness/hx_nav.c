@@ -826,7 +826,13 @@ void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
     k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
                  c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
                  bias_model_name(c), detector_name(c), det,
-                 samples_name(c), c->lever ? "on" : "off", c->settle ? "on" : "off", c->zaru ? "on" : "off");
+                 samples_name(c), c->lever ? "on" : "off", c->settle ? "on" : "off",
+                 /* the ZARU updates the gyro bias states (fnav_ukf_zaru):
+                  * with the bias model off it does nothing */
+                 !c->zaru                          ? "off"
+                 : c->bias_model == FNAV_BIAS_OFF ? "on (no effect: it updates the gyro bias, which --bias-model off "
+                                                    "does not estimate)"
+                                                  : "on");
     used = k > 0 ? (size_t)k : 0u;
     for (i = 0; i < t->nparams && used < size; i++) {
         k = snprintf(buf + used, size - used, "%s%s", i == 0 ? "; parameters overridden: " : ", ", t->params[i]);
