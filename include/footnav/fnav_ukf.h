@@ -156,7 +156,7 @@ typedef struct {
     fnav_real_t accel_tau_s[3];           /**< accel bias correlation time, s */
     fnav_real_t gyro_bias_sigma_rps[3];   /**< gyro bias stationary std (paper sigma_bias), rad/s */
     fnav_real_t accel_bias_sigma_mps2[3]; /**< accel bias stationary std, m/s^2 */
-    fnav_strapdown_config_t strapdown;    /**< gravity, coning */
+    fnav_strapdown_config_t strapdown;    /**< gravity, coning, sample type */
     fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0; beta >= alpha^2) */
     fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
     fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
