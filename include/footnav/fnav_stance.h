@@ -29,8 +29,8 @@
  * sample rate (configured, or the median of the first FNAV_STANCE_RATE_PROBE
  * intervals, fewer when FNAV_STANCE_MAX_WINDOW is smaller; stamps too coarse
  * for a median interval need the rate configured), so the detector behaves
- * the same at 100 Hz and at 820 Hz. The ring holds h + L + 1 samples at
- * most (FNAV_STANCE_MAX_WINDOW): above about 1.95 kHz with the default 64
+ * the same at 100 Hz and at 820 Hz. h + L + 2 samples must fit in the
+ * ring (FNAV_STANCE_MAX_WINDOW, as set_rate applies it): above about 1.95 kHz with the default 64
  * the window is cut to what fits and min_zupt_s to what is left (at 4 kHz:
  * 63 samples, 15.75 ms, and 32 samples, 8 ms, not 25 and 20 ms;
  * docs/navigation.md, "Stance detector").
