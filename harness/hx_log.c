@@ -2913,7 +2913,9 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         }
     }
     if (n < r->ncols_needed) {
-        if (r->unit_field > 0) {
+        /* the unit alone among the columns read shifted them (past them, it
+         * does not: a row cut short under a header read by its names) */
+        if (r->unit_field > 0 && r->unit_field <= r->ncols_needed) {
             set_err(r, "%s:%ld: %d column%s, expected at least %d; " UNIT_ALONE_FIX, r->path, r->stats.lines, n,
                     n == 1 ? "" : "s", r->ncols_needed, r->unit_text, r->unit_field);
             return FNAV_E_FORMAT;

@@ -798,6 +798,11 @@ printf 'Time [s] ax ay az gx gy gz\n0 0 0 9.8 0 0 0\n0.01 0 0 9.8 0 0 0\n' >"$T/
 expect_exit 1 "a time name holding a blank in a blank-separated header refused" "$H" info "$T/tblank.csv"
 expect_err "tblank.csv:2: 7 columns, expected at least 8; the fields are separated by blanks and the header's names hold blanks ('\[s\]' is its field 2 alone)" \
     "the row's short count said with its cause"
+# ... but a unit alone past the columns read ("t ax ... gz [SI]", the header read by its names) does not make a
+# row cut short (the last line of a copy stopped early) such a header: the short count alone, no remedy about blanks
+printf 't ax ay az gx gy gz [SI]\n0 0 0 9.8 0 0 0 x\n0.01 0 0 9.8 0 0 0 x\n0.02 0 0 9.8\n' >"$T/ucut.csv"
+expect_exit 1 "a row cut short under a header with a unit alone past the columns read" "$H" info "$T/ucut.csv"
+expect_err "ucut.csv:4: 4 columns, expected at least 7 (using the 2 samples before it)" "a cut row: its short count, no claim about the header's names"
 
 # two Consensys devices in one file: every channel has two candidates, more than the refusal holds; the list is cut
 # after a whole item and marked "; ...", not inside a name (it ended "gx: 2 candidates (A_Gyr" before 2026-12-07)
