@@ -2042,7 +2042,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
-    int n, i, rc, total, dc_line, tried = 0, sep_given = 0, consensys;
+    int n, i, rc, total, dc_line, tried = 0, sep_given = 0, consensys, units;
     hx_comment_t ch;
     const char *text;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
@@ -2114,10 +2114,14 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
      * blank-separated file cannot tell from fields; named where the
      * columns do not fit */
     r->unit_field = 0;
-    for (i = 0; r->delim == ' ' && i < n && r->unit_field == 0; i++) {
+    units = 0;
+    for (i = 0; r->delim == ' ' && i < n; i++) {
         if (f[i][0] == '(' || f[i][0] == '[') {
-            r->unit_field = i + 1;
-            copy_str(r->unit_text, sizeof r->unit_text, f[i]);
+            units++;
+            if (r->unit_field == 0) {
+                r->unit_field = i + 1;
+                copy_str(r->unit_text, sizeof r->unit_text, f[i]);
+            }
         }
     }
     if (r->meta.format == HX_FMT_CSV && !dc_line && all_numeric(f, n)) {
@@ -2255,7 +2259,9 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         /* one sensor's file (a logger that writes the other to another
          * file): say how to make one log of the two */
         const int one = hx_tri_header_kind(f, n);
-        if (r->unit_field > 0) {
+        /* one unit alone as the last field is a note ("gz (SI)"), not a
+         * name cut apart: the name missing is said as it was */
+        if (r->unit_field > 0 && (r->unit_field < n || units > 1)) {
             r->missing_col = -1; /* no detection hint: --columns cannot split such a header */
             set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]; " UNIT_ALONE_FIX,
                     r->path, r->stats.lines, names[i], r->unit_text, r->unit_field);

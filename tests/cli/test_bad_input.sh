@@ -803,6 +803,12 @@ expect_err "tblank.csv:2: 7 columns, expected at least 8; the fields are separat
 printf 't ax ay az gx gy gz [SI]\n0 0 0 9.8 0 0 0 x\n0.01 0 0 9.8 0 0 0 x\n0.02 0 0 9.8\n' >"$T/ucut.csv"
 expect_exit 1 "a row cut short under a header with a unit alone past the columns read" "$H" info "$T/ucut.csv"
 expect_err "ucut.csv:4: 4 columns, expected at least 7 (using the 2 samples before it)" "a cut row: its short count, no claim about the header's names"
+# ... nor a header whose one unit alone is its last field, a note ("sec ax ... gz (SI)"): what is wrong there is
+# the name of a column, said as before, not the blanks (which separating the fields with commas does not mend)
+printf 'sec ax ay az gx gy gz (SI)\n0 0 0 9.8 0 0 0 x\n' >"$T/unote.csv"
+expect_exit 1 "a blank-separated header with a unit alone as its last field, its time named 'sec'" "$H" info "$T/unote.csv"
+expect_err "unote.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t" \
+    "a unit alone as the last field: the missing name said, not the blanks"
 
 # two Consensys devices in one file: every channel has two candidates, more than the refusal holds; the list is cut
 # after a whole item and marked "; ...", not inside a name (it ended "gx: 2 candidates (A_Gyr" before 2026-12-07)
