@@ -2119,8 +2119,13 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         if (f[i][0] == '(' || f[i][0] == '[') {
             units++;
             if (r->unit_field == 0) {
+                /* cut to fit, and marked so */
+                const int cut = strlen(f[i]) >= sizeof r->unit_text;
                 r->unit_field = i + 1;
-                copy_str(r->unit_text, sizeof r->unit_text, f[i]);
+                copy_str(r->unit_text, sizeof r->unit_text - (cut ? 3 : 0), f[i]);
+                if (cut) {
+                    strcat(r->unit_text, "...");
+                }
             }
         }
     }

@@ -809,6 +809,10 @@ printf 'sec ax ay az gx gy gz (SI)\n0 0 0 9.8 0 0 0 x\n' >"$T/unote.csv"
 expect_exit 1 "a blank-separated header with a unit alone as its last field, its time named 'sec'" "$H" info "$T/unote.csv"
 expect_err "unote.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t" \
     "a unit alone as the last field: the missing name said, not the blanks"
+# a unit alone longer than the message quotes is cut and marked "...", not cut without a mark inside it
+printf 'Time (seconds_since_the_start_of_the_log) Gyroscope X (deg/s) Gyroscope Y (deg/s) Gyroscope Z (deg/s) Accelerometer X (g) Accelerometer Y (g) Accelerometer Z (g)\n0 0.1 0.2 0.3 0 0 1\n' >"$T/ulong.csv"
+expect_exit 1 "x-io's header separated by blanks, its first unit long" "$H" info "$T/ulong.csv"
+expect_err "('(seconds_since_the_s\.\.\.' is its field 2 alone)" "a long unit alone: cut and marked"
 
 # two Consensys devices in one file: every channel has two candidates, more than the refusal holds; the list is cut
 # after a whole item and marked "; ...", not inside a name (it ended "gx: 2 candidates (A_Gyr" before 2026-12-07)
