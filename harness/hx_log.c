@@ -2236,9 +2236,10 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
          * counted from 1 where it counts from 0 (not told to give what it
          * gave) */
         const long base = index_row_base(f, n);
-        set_err(r, "%s:%ld: the header counts the columns from %ld (pandas' header of an array), and --columns names "
-                   "them as it does: %s=%s is not one of its names, %ld to %ld (the first column is %ld)",
-                r->path, r->stats.lines, base, what[i], names[i], base, base + n - 1, base);
+        set_err(r, "%s:%ld: the header counts the columns from %ld%s, and --columns names them as it does: %s=%s is "
+                   "not one of its names, %ld to %ld (the first column is %ld)",
+                r->path, r->stats.lines, base, base == 0 ? " (pandas' header of an array)" : "", what[i], names[i],
+                base, base + n - 1, base);
     } else if (all_numeric(f, n)) {
         set_err(r, "%s:%ld: the first line is data, not a header: a log of format %s starts with its header (%s)%s",
                 r->path, r->stats.lines, hx_format_name(r->meta.format),

@@ -814,6 +814,13 @@ printf 'Time (seconds_since_the_start_of_the_log) Gyroscope X (deg/s) Gyroscope 
 expect_exit 1 "x-io's header separated by blanks, its first unit long" "$H" info "$T/ulong.csv"
 expect_err "('(seconds_since_the_s\.\.\.' is its field 2 alone)" "a long unit alone: cut and marked"
 
+# a header of numbers counting the columns from 1 is no pandas header (pandas counts from 0): --columns t=0,... over it
+# is told how it counts, without naming pandas
+printf '1,2,3,4,5,6,7\n0,0,0,9.8,0,0,0\n' >"$T/from1.csv"
+expect_exit 1 "--columns t=0,... over a header counting from 1" "$H" info "$T/from1.csv" --columns t=0,ax=1,ay=2,az=3,gx=4,gy=5,gz=6
+expect_err "from1.csv:1: the header counts the columns from 1, and --columns names them as it does: t=0 is not one of its names, 1 to 7 (the first column is 1)$" \
+    "a header counting from 1: how it counts, pandas not named"
+
 # two Consensys devices in one file: every channel has two candidates, more than the refusal holds; the list is cut
 # after a whole item and marked "; ...", not inside a name (it ended "gx: 2 candidates (A_Gyr" before 2026-12-07)
 cols="Timestamp_Unix_CAL Accel_WR_X_CAL Accel_WR_Y_CAL Accel_WR_Z_CAL Gyro_X_CAL Gyro_Y_CAL Gyro_Z_CAL"
