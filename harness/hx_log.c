@@ -3257,6 +3257,15 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 r->pos = r->len;
                 return FNAV_E_TRUNCATED;
             }
+            if (left > 0 && r->stats.clean_end) {
+                /* after the end record: the log was closed, every record
+                 * read; not a cut record */
+                set_err(r, "%s: %zu byte%s after the end record, at byte %lld: too few for a record (junk appended to "
+                           "a closed log?)",
+                        r->path, left, left == 1 ? "" : "s", r->offset);
+                r->pos = r->len;
+                return FNAV_E_FORMAT;
+            }
             if (left > 0) {
                 set_err(r, "%s: truncated: record #%ld at byte %lld has %zu of %d bytes (%ld complete records read)",
                         r->path, r->record_slot, r->offset, left, HX_BIN_RECORD_SIZE, r->stats.records);

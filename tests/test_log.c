@@ -296,6 +296,12 @@ static void test_bin_corrupted(void **state)
     memcpy(b, g_golden, g_golden_n);
     memset(b + g_golden_n, 0x55, 100);
     expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
+    /* ... shorter than a record: bytes after the end, every record read,
+     * not "truncated: record #7 ... has 25 of 48 bytes" (a cut record
+     * of a log that was closed) */
+    expect_bin(b, g_golden_n + 25, 1, 6, FNAV_E_FORMAT,
+               ": 25 bytes after the end record, at byte 528: too few for a record (junk appended to a closed "
+               "log?)");
 }
 
 /* A .bin (or .bin.gz) whose magic is off by one byte (a flipped bit): the
