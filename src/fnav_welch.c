@@ -25,7 +25,8 @@ fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t 
     fnav_welch_config_t cc;
     uint32_t i;
     /* compensated sums in fnav_real_t (Kahan): double ones were soft-float
-     * calls on the Cortex-M4F, 1.9 KB of flash for this one init (test_psd.sh) */
+     * calls on the Cortex-M4F, 1,260 bytes of the firmware image for this
+     * one init (make firmware: 46,048 -> 44,788; test_psd.sh) */
     fnav_real_t s1 = FNAV_R(0.0), s1c = FNAV_R(0.0), s2 = FNAV_R(0.0), s2c = FNAV_R(0.0);
     fnav_real_t w1r = FNAV_R(0.0), w1rc = FNAV_R(0.0), w1i = FNAV_R(0.0), w1ic = FNAV_R(0.0);
     if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_welch_t) || cfg_size != sizeof(fnav_welch_config_t)) {
