@@ -2858,7 +2858,8 @@ const char *hx_stdin_hint(const char *path, int err)
     return strcmp(path, "-") == 0 && err == ENOENT ? ": for standard input give /dev/stdin (a pipe is read)" : "";
 }
 
-int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size)
+int hx_value_beyond(double v, double scale, int gyro, const char *field, const hx_csv_layout_t *ug_ask, char *text,
+                    size_t size)
 {
     /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at this
      * limit: before the units check can name ug, a log in ug meets this
@@ -2867,9 +2868,22 @@ int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char 
      * the value in ug is within the widest range of MEMS accelerometers
      * (ug_plausible), as a question: raw counts of a 24-bit converter
      * reach it too */
-    char give[96] = "";
-    if (fabs(v * scale) <= FNAV_INPUT_MAX_ABS) {
+    char give[96] = "", quote[96];
+    const double si = v * scale;
+    if (fabs(si) <= FNAV_INPUT_MAX_ABS) {
         return 0;
+    }
+    /* read in another unit, the value quoted is not the one compared
+     * with the limit: both are given ('-105307.65' g, -1.03e+06 m/s^2),
+     * lest 1e5 look within 1e6; not for a number beyond 1e300, which
+     * parse_num keeps as 1e300 */
+    if (scale == 1.0) {
+        snprintf(quote, sizeof quote, "('%.20s')", field);
+    } else if (isfinite(si) && fabs(v) < 1.0e300) {
+        snprintf(quote, sizeof quote, "('%.20s' %s, %.3g %s)", field,
+                 gyro ? hx_gyro_unit_name(scale) : hx_accel_unit_name(scale), si, gyro ? "rad/s" : "m/s^2");
+    } else {
+        snprintf(quote, sizeof quote, "('%.20s' %s)", field, gyro ? hx_gyro_unit_name(scale) : hx_accel_unit_name(scale));
     }
     if (ug_ask != NULL && ug_ask->acc_scale != HX_UG_MPS2 && ug_plausible(v)) {
         /* the whole --units value, as the units check names it */
@@ -2878,7 +2892,7 @@ int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char 
         want.acc_scale = HX_UG_MPS2;
         snprintf(give, sizeof give, "; in ug? 1 g is 1e6 ug: %s", hx_units_give(&want, items, sizeof items));
     }
-    snprintf(text, size, "beyond %g in SI units (no sensor reads that%s)", FNAV_INPUT_MAX_ABS, give);
+    snprintf(text, size, "%s is beyond %g in SI units (no sensor reads that%s)", quote, FNAV_INPUT_MAX_ABS, give);
     return 1;
 }
 
@@ -2982,9 +2996,9 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             /* what the core would refuse (and float would make Inf) is a
              * reader error here, with its line (hx_value_beyond, merge's
              * check too) */
-            if (hx_value_beyond(v[c * 3 + i], c == 0 ? r->acc_scale : r->gyr_scale,
+            if (hx_value_beyond(v[c * 3 + i], c == 0 ? r->acc_scale : r->gyr_scale, c == 1, f[col],
                                 c == 0 && r->meta.format == HX_FMT_CSV ? &r->layout : NULL, what, sizeof what)) {
-                set_err(r, "%s:%ld: column %d ('%.20s') is %s", r->path, r->stats.lines, col + 1, f[col], what);
+                set_err(r, "%s:%ld: column %d %s", r->path, r->stats.lines, col + 1, what);
                 return FNAV_E_RANGE;
             }
         }

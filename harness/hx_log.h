@@ -465,12 +465,16 @@ const char *hx_decimal_mix_text(const hx_decimal_mix_t *m, const char *path, cha
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
 /** Whether a value v read in a unit of scale SI units each is beyond what
  *  any sensor reads (|v scale| > FNAV_INPUT_MAX_ABS, or not finite): 1 and
- *  the text that follows "PATH:LINE: column N ('TEXT') is " in text ("beyond
- *  1e+06 in SI units (no sensor reads that)"), else 0. ug_ask: the layout
- *  of an accelerometer's column whose remedy is --units, NULL else: a value
- *  that read in ug is within 400 g asks "in ug?" with the --units value.
- *  The CSV log reader's check and merge's. */
-int hx_value_beyond(double v, double scale, const hx_csv_layout_t *ug_ask, char *text, size_t size);
+ *  the text that follows "PATH:LINE: column N " in text ("('TEXT') is
+ *  beyond 1e+06 in SI units (no sensor reads that)"; read in another unit
+ *  than SI, the unit and the value in SI units follow TEXT: "('-105307.65'
+ *  g, -1.03e+06 m/s^2)"), else 0. field: the field's text (TEXT, its first
+ *  20 characters); gyro: 1 for a rate (rad/s), 0 for an acceleration.
+ *  ug_ask: the layout of an accelerometer's column whose remedy is --units,
+ *  NULL else: a value that read in ug is within 400 g asks "in ug?" with
+ *  the --units value. The text log readers' check and merge's. */
+int hx_value_beyond(double v, double scale, int gyro, const char *field, const hx_csv_layout_t *ug_ask, char *text,
+                    size_t size);
 
 /** ": for standard input give /dev/stdin (a pipe is read)" when @p path
  *  is "-" and no file of that name could be opened (@p err, the errno of

@@ -650,9 +650,9 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
                 /* what the log reader refuses in the merged log: the file
                  * stops here, as at a row of text */
                 char what[160];
-                if (hx_value_beyond(v[k], scale, kind == HX_TRI_ACC ? &ask : NULL, what, sizeof what)) {
-                    say(f->error, sizeof f->error, "%s:%ld: column %d ('%.20s') is %s", path, t->lineno,
-                        c.ax[k] + 1, df[c.ax[k]], what);
+                if (hx_value_beyond(v[k], scale, kind != HX_TRI_ACC, df[c.ax[k]], kind == HX_TRI_ACC ? &ask : NULL, what,
+                                    sizeof what)) {
+                    say(f->error, sizeof f->error, "%s:%ld: column %d %s", path, t->lineno, c.ax[k] + 1, what);
                     bad = c.ax[k];
                     break;
                 }

@@ -3287,7 +3287,7 @@ static void test_range_in_si_units(void **state)
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
     assert_int_equal(r.n, 1);
     assert_int_equal(r.end, FNAV_E_RANGE);
-    assert_non_null(strstr(r.err, ":3: column 5 ('2e5') is beyond 1e+06 in SI units"));
+    assert_non_null(strstr(r.err, ":3: column 5 ('2e5' g, 1.96e+06 m/s^2) is beyond 1e+06 in SI units"));
     unlink(p);
 }
 

@@ -447,7 +447,7 @@ expect_exit 1 "merge: a value of 5e6 m/s^2" "$H" merge "$T/c_ug.csv" "$T/c_gyr.c
 expect_err "c_ug.csv:201: column 4 ('5e6') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
     "merge: 5e6 refused, ug asked about as the log reader asks"
 expect_exit 1 "merge: 2e5 g, beyond 1e6 once in m/s^2" "$H" merge "$T/c_g.csv" "$T/c_gyr.csv" "$T/o.csv" --units accel=g
-expect_err "c_g.csv:201: column 4 ('2e5') is beyond 1e+06 in SI units" "merge: the value judged in SI units"
+expect_err "c_g.csv:201: column 4 ('2e5' g, 1.96e+06 m/s^2) is beyond 1e+06 in SI units" "merge: the value judged in SI units, quoted in both"
 # the header found as the log reader finds it (merge read numpy's first
 # row as the header, 'the header names no accelerometer axis', and said
 # line 1 of a header on line 2)

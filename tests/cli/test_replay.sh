@@ -1615,8 +1615,25 @@ if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about u
 # the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
 # read as g, the walk meets the limit at once (1e6 g is 9.8e6 m/s^2): it is not refused without a hint
 expect_exit 1 "the walk in ug, read as g" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=g --out /dev/null
-expect_err "in_ug_walk.csv:2: column [234] ('[-0-9.e+]*') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
-    "the walk in ug read as g: the reader's limit asks about ug"
+expect_err "in_ug_walk.csv:2: column [234] ('[-0-9.e+]*' g, [-0-9.e+]* m/s^2) is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
+    "the walk in ug read as g: the reader's limit asks about ug, the value in g and m/s^2"
+# read in another unit, the value quoted is not the one compared with 1e6: the message gives both
+# (it quoted only '-105307.65', g, which looks within 1e6; a CLI mutation sweep's find)
+expect_exit 1 "an acceleration of -105307.65 g" sh -c "awk -F, 'NR == 2 { \$2 = \"-105307.65\" } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/acc_g_big.csv' && '$H' replay '$T/acc_g_big.csv' --quiet --units accel=g --out /dev/null"
+expect_err "acc_g_big.csv:2: column 2 ('-105307.65' g, -1.03e+06 m/s^2) is beyond 1e+06 in SI units" \
+    "read with accel=g, the value beyond 1e6 quoted in g and in m/s^2"
+expect_exit 1 "a rate of 9e7 deg/s" sh -c "awk -F, 'NR == 2 { \$5 = \"9e7\" } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/gyr_d_big.csv' && '$H' replay '$T/gyr_d_big.csv' --quiet --units gyro=deg/s --out /dev/null"
+expect_err "gyr_d_big.csv:2: column 5 ('9e7' deg/s, 1.57e+06 rad/s) is beyond 1e+06 in SI units" \
+    "read with gyro=deg/s, the value beyond 1e6 quoted in deg/s and in rad/s"
+if [ -n "$D" ] && [ -f "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" ]; then
+    # the 3DM-GX2's text reads g: its first sample's a_x made -105307.65
+    head -n 30 "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" | sed '5s/-0\.10581776/-105307.65/' >"$T/gx2_big.txt"
+    expect_exit 1 "a GX2 acceleration of -105307.65 g" "$H" replay "$T/gx2_big.txt" --quiet --out /dev/null
+    expect_err "gx2_big.txt:5: column 2 ('-105307.65' g, -1.03e+06 m/s^2) is beyond 1e+06 in SI units (no sensor reads that)" \
+        "gx2: the value beyond 1e6 quoted in g and in m/s^2"
+else
+    echo "skip the GX2 value beyond 1e6 (no ../shared/data; set FNAV_DATA_DIR)"
+fi
 expect_exit 1 "accelerometer in ug, read with accel=mg" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=mg --out /dev/null
 expect_err "the log is not in m/s^2: in ug? (read as mg by --units accel=mg: give --units accel=ug) (docs/log-format.md)" \
     "ug read with accel=mg: named as ug, the remedy naming accel=ug"
