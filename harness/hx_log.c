@@ -4691,10 +4691,14 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
          * warning: the logger restarts the timer about once a second and
          * the bridge is exact to a tick (docs/log-format.md, "GX2 time"), so
          * as a warning every GX2 log would warn of it */
+        char count[32] = "once"; /* "restarted 1 time" read awkwardly; "2 times" on */
+        if (r->gx2_bridged != 1) {
+            snprintf(count, sizeof count, "%ld times", r->gx2_bridged);
+        }
         add_note(r,
-                 "%s: the sensor's timer restarted %ld time%s (normal for the 3DM-GX2, about once a second); each "
+                 "%s: the sensor's timer restarted %s (normal for the 3DM-GX2, about once a second); each "
                  "restart bridged with the measured period (docs/log-format.md, GX2 time)",
-                 r->path, r->gx2_bridged, r->gx2_bridged == 1 ? "" : "s");
+                 r->path, count);
     }
     if (r->meta.format == HX_FMT_GX2 && r->gx2_nr_back > 0) {
         add_warn(r,

@@ -1447,11 +1447,11 @@ static void test_gx2_restart_then_error(void **state)
     assert_int_equal(log.n, 10);
     assert_true(log.status != FNAV_END);
     /* a note, not a warning (routine for the GX2), and the
-     * count in the singular */
+     * count in words: "once", not "1 time" */
     {
         char want[512];
         snprintf(want, sizeof want,
-                 "note: %s: the sensor's timer restarted 1 time (normal for the 3DM-GX2, about once a second); each "
+                 "note: %s: the sensor's timer restarted once (normal for the 3DM-GX2, about once a second); each "
                  "restart bridged with the measured period (docs/log-format.md, GX2 time)",
                  p);
         assert_string_equal(log.warnings, want);
@@ -1605,7 +1605,7 @@ static void test_gx2_restart_tolerance(void **state)
         ticks += nr == 9 ? p : (long)(k_step[nr - 2] * (double)p + 0.5);
         assert_true(log.t_ns[nr - 1] == (int64_t)ticks * 1000000000LL / 19660800LL);
     }
-    assert_non_null(strstr(log.warnings, ": the sensor's timer restarted 1 time (normal for the 3DM-GX2"));
+    assert_non_null(strstr(log.warnings, ": the sensor's timer restarted once (normal for the 3DM-GX2"));
     assert_true(strncmp(log.warnings, "note: ", 6) == 0);
     hx_log_free(&log);
     remove(path);
