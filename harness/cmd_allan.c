@@ -816,7 +816,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * samples were consecutive (a 60 s hole in an hour was only "3
          * intervals differ"); a stamp written twice said as such */
         char what[300];
-        hx_irregular_text(what, sizeof what, repeats, gaps, longest_gap_s, missing, (double)R->n);
+        hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)R->n);
         hx_warn(CMD, "%s: %ld interval%s from 1/rate by more than 10 %%%s: the Allan variance assumes uniform "
                      "sampling%s",
                 path, irregular, irregular == 1 ? " differs" : "s differ", what, hx_gaps_joined(gaps));

@@ -909,7 +909,7 @@ int hx_cmd_psd(int argc, char **argv)
         }
         if (irregular > 0) {
             char what[300];
-            hx_irregular_text(what, sizeof what, repeats, gaps, longest_gap_s, missing, (double)log.n);
+            hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)log.n);
             hx_warn(CMD, "%s: %ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s: Welch assumes uniform "
                          "sampling%s",
                     a.pos[0], irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, what, hx_gaps_joined(gaps));

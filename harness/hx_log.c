@@ -5473,10 +5473,21 @@ hx_format_t hx_detect_file(const char *path)
     return got > 0 ? detect(head, (size_t)got) : HX_FMT_AUTO;
 }
 
-void hx_irregular_text(char *buf, size_t size, long repeats, long gaps, double longest_gap_s, double missing,
-                       double n)
+void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
+                       double missing, double n)
 {
     char rep[96] = "", gap[192] = "";
+    if (irregular == 1 && repeats + gaps <= 1) {
+        /* one interval: what it is, in brackets ("1 interval differs ...,
+         * 1 of them a gap (longest ...)" read awkwardly) */
+        if (gaps == 1) {
+            snprintf(buf, size, " (a gap of %.3g s; about %.0f sample%s missing, %.2g %% of the log)", longest_gap_s,
+                     missing, missing == 1.0 ? "" : "s", 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+        } else {
+            snprintf(buf, size, "%s", repeats == 1 ? " (a time stamp repeated)" : "");
+        }
+        return;
+    }
     if (repeats > 0) {
         snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
                  repeats == 1 ? "a time stamp repeated" : "time stamps repeated");

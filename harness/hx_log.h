@@ -320,9 +320,11 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
 /** What the irregular intervals of a log were, for allan's and psd's
  *  warning: ", N of them time stamps repeated, M of them gaps (longest L
  *  s; about K samples missing in all, P % of the log)" (either part left
- *  out when 0) into buf; n the samples read. */
-void hx_irregular_text(char *buf, size_t size, long repeats, long gaps, double longest_gap_s, double missing,
-                       double n);
+ *  out when 0) into buf; of one irregular interval, what it is: " (a gap
+ *  of L s; about K samples missing, P % of the log)", " (a time stamp
+ *  repeated)" or "". n the samples read. */
+void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
+                       double missing, double n);
 /** ", and the samples are joined across the gap(s) as if consecutive"
  *  for gaps > 0, else "". */
 const char *hx_gaps_joined(long gaps);
