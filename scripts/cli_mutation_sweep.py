@@ -212,6 +212,14 @@ def sweep_eval(a, rng):
                "pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_strides_gcp.csv",
                "pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_imu.csv",
                "pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_34_strides_gcp.csv"]
+    missing = [os.path.join(sub, n) for sub, names in files.items() for n in names
+               if not os.path.isfile(os.path.join(a.data, sub, n))]
+    if missing:
+        # not a FileNotFoundError traceback from shutil.copy (a clone outside
+        # the repository's parent directory finds no ../shared/data), as the
+        # default mode says it
+        sys.exit("no eval data under %s (%s missing%s): give --data DIR or set FNAV_DATA_DIR"
+                 % (a.data, missing[0], ", and %d more" % (len(missing) - 1) if len(missing) > 1 else ""))
     shutil.rmtree(base, ignore_errors=True)
     for sub, names in files.items():
         os.makedirs(os.path.join(base, sub))

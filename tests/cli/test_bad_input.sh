@@ -846,5 +846,24 @@ else
     echo "note: the message's writes not counted (no strace, or it cannot trace here)"
 fi
 
+# --- scripts/cli_mutation_sweep.py with no data under --data (a clone
+# outside the repository's parent finds no ../shared/data): says so and how
+# to give it, in both modes; --eval wrote a FileNotFoundError traceback from
+# shutil.copy (the default mode's IndexError was mended before)
+PY=${PYTHON:-/usr/bin/python3}
+if [ -x "$PY" ]; then
+    for mode in "" --eval; do
+        env -u FNAV_DATA_DIR "$PY" scripts/cli_mutation_sweep.py $mode --harness "$H" --data "$T/nodata" --cases 1 \
+            --out "$T/sweep" >"$T/out" 2>"$T/err"
+        rc=$?
+        [ "$rc" -eq 1 ] && grep -q "under $T/nodata.*: give --data DIR or set FNAV_DATA_DIR" "$T/err" &&
+            ! grep -q Traceback "$T/err" &&
+            pass "cli_mutation_sweep.py ${mode:-(default)}: no data said, --data named, no traceback" ||
+            fail "cli_mutation_sweep.py ${mode:-(default)} with no data: exit $rc, $(tail -n 1 "$T/err")"
+    done
+else
+    echo "skip cli_mutation_sweep.py with no data (no $PY)"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
