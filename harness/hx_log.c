@@ -2898,7 +2898,7 @@ int hx_value_beyond(double v, double scale, int gyro, const char *field, const h
 
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
 {
-    char *f[HX_MAX_COLS], what[160];
+    char *f[HX_MAX_COLS], what[320];
     int n, i, neg;
     double v[6], tv = 0.0, aux = 0.0;
     int64_t t_ns = 0;

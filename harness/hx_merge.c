@@ -649,7 +649,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
             for (k = 0; k < 3; k++) {
                 /* what the log reader refuses in the merged log: the file
                  * stops here, as at a row of text */
-                char what[160];
+                char what[320]; /* the value quoted in its unit and in SI units, the --units remedy */
                 if (hx_value_beyond(v[k], scale, kind != HX_TRI_ACC, df[c.ax[k]], kind == HX_TRI_ACC ? &ask : NULL, what,
                                     sizeof what)) {
                     say(f->error, sizeof f->error, "%s:%ld: column %d %s", path, t->lineno, c.ax[k] + 1, what);

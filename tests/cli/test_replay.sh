@@ -1625,6 +1625,11 @@ expect_err "acc_g_big.csv:2: column 2 ('-105307.65' g, -1.03e+06 m/s^2) is beyon
 expect_exit 1 "a rate of 9e7 deg/s" sh -c "awk -F, 'NR == 2 { \$5 = \"9e7\" } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/gyr_d_big.csv' && '$H' replay '$T/gyr_d_big.csv' --quiet --units gyro=deg/s --out /dev/null"
 expect_err "gyr_d_big.csv:2: column 5 ('9e7' deg/s, 1.57e+06 rad/s) is beyond 1e+06 in SI units" \
     "read with gyro=deg/s, the value beyond 1e6 quoted in deg/s and in rad/s"
+# the longest: a 20-character field, the ug question and a three-item --units remedy, whole (161 characters,
+# over the 160 of the reader's buffer that held the text after "is")
+expect_exit 1 "a 20-character acceleration in g beyond 1e6" sh -c "awk -F, 'NR == 2 { \$2 = \"-105307.650000000001\" } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/acc_g_long.csv' && '$H' replay '$T/acc_g_long.csv' --quiet --units time=ms,accel=g,gyro=8.75mdps --out /dev/null"
+expect_err "acc_g_long.csv:2: column 2 ('-105307.650000000001' g, -1.03e+06 m/s^2) is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units time=ms,accel=ug,gyro=8.75mdps) (" \
+    "the longest such message whole, its remedy closed"
 if [ -n "$D" ] && [ -f "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" ]; then
     # the 3DM-GX2's text reads g: its first sample's a_x made -105307.65
     head -n 30 "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" | sed '5s/-0\.10581776/-105307.65/' >"$T/gx2_big.txt"
