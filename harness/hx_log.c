@@ -5492,10 +5492,15 @@ void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, lon
         snprintf(rep, sizeof rep, ", %ld of them %s", repeats,
                  repeats == 1 ? "a time stamp repeated" : "time stamps repeated");
     }
-    if (gaps > 0) {
-        snprintf(gap, sizeof gap, ", %ld of them %s (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
+    if (gaps > 1) {
+        snprintf(gap, sizeof gap, ", %ld of them gaps (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
                                   "of the log)",
-                 gaps, gaps == 1 ? "a gap" : "gaps", longest_gap_s, missing, missing == 1.0 ? "" : "s",
+                 gaps, longest_gap_s, missing, missing == 1.0 ? "" : "s",
+                 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+    } else if (gaps == 1) {
+        /* one gap has no "longest" and no "in all" */
+        snprintf(gap, sizeof gap, ", 1 of them a gap of %.3g s (about %.0f sample%s missing, %.2g %% of the log)",
+                 longest_gap_s, missing, missing == 1.0 ? "" : "s",
                  100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
     }
     snprintf(buf, size, "%s%s", rep, gap);

@@ -623,8 +623,8 @@ expect_err "1 of 4999 intervals differs from 1/100 s by more than 10 % (a gap of
     "a 5 s gap: its length and the samples lost, in the singular"
 awk -F, 'NR == 1003 { $1 = "10.00" } { print }' OFS=, "$T/gap5.csv" >"$T/rep.csv"
 expect_exit 0 "a time stamp written twice" "$H" psd "$T/rep.csv"
-expect_err "1 of them a time stamp repeated, 1 of them a gap (longest 5.01 s; about 500 samples missing" \
-    "a repeated stamp: said, no sample missing for it"
+expect_err "1 of them a time stamp repeated, 1 of them a gap of 5.01 s (about 500 samples missing, 9.1 % of the log)" \
+    "a repeated stamp: said, no sample missing for it; the one gap without 'longest' and 'in all'"
 # --help: --json - and sensitivity.png's --sensitivity
 "$H" psd --help >"$T/out" 2>&1
 expect_out "--json FILE .*'-': standard output" "psd --help: --json - said"
