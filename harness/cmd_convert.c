@@ -151,6 +151,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     hx_writer_t *w;
     char err[HX_ERR_SIZE]; /* a reader's or the resampler's refusal: the path and a remedy (hx_log.h) */
     long dups = 0, k;
+    size_t n_read; /* the input's samples read, before its error if any */
     double fs = 0.0;
     int exit_code, lrc;
     fnav_sample_t s;
@@ -180,6 +181,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
             exit_code = HX_EXIT_OK;
         }
     }
+    n_read = raw.n;
     if (raw.n > 0) {
         wd->t0_ns = raw.t_ns[0]; /* the window counts from the input's first sample */
         wd->have_t0 = 1;
@@ -214,6 +216,14 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     if (dups > 0) {
         hx_warn("convert", "%s: %ld duplicated time stamp%s dropped before resampling", a->pos[0], dups,
                 dups == 1 ? "" : "s");
+    }
+    if (exit_code == HX_EXIT_DATA) {
+        /* the reader's warning named the line; exit 1 says an error too, as
+         * without --rate and as info's and psd's closing message (it exited
+         * 1 after a warning alone) */
+        hx_error("convert",
+                 "%s: incomplete input (warned above): the output covers the %zu sample%s before the error",
+                 a->pos[0], n_read, n_read == 1 ? "" : "s");
     }
     if (exit_code == HX_EXIT_OK && window_empty(wd, a)) {
         exit_code = HX_EXIT_DATA;

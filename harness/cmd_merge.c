@@ -248,7 +248,13 @@ int hx_cmd_merge(int argc, char **argv)
             hx_error("merge", "no sample of %s falls where %s has samples", a.pos[base], a.pos[other]);
             exit_code = HX_EXIT_DATA;
         } else if (part[0] > 0 || part[1] > 0) {
-            exit_code = HX_EXIT_DATA; /* warned above: the merge covers the samples before the error */
+            /* the warning above named the row; exit 1 says an error too, as
+             * convert's and info's (it exited 1 after warnings alone) */
+            k = part[0] > 0 ? 0 : 1;
+            hx_error("merge",
+                     "%s: incomplete input (warned above): the %ld sample%s written cover its %zu before the error",
+                     a.pos[k], written, written == 1 ? "" : "s", f[k].n);
+            exit_code = HX_EXIT_DATA;
         }
     }
     hx_tri_free(&f[0]);

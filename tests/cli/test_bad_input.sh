@@ -181,6 +181,12 @@ expect_exit 0 "convert --rate 50 --end 1.5 of a log with NaN at 2 s" "$H" conver
 expect_exit 0 "info of that .bin: complete (END written)" "$H" info "$T/wr.bin"
 expect_exit 1 "convert --rate 50 --end 1.9: the error within the resampler's reach" "$H" convert "$T/nan200.csv" "$T/wr2.bin" --end 1.9 --rate 50
 expect_exit 1 "info of that .bin: incomplete" "$H" info "$T/wr2.bin"
+# a partial input resampled exited 1 after the reader's warning alone, with
+# no error said (without --rate: the error); now a closing error says what
+# the output covers, as info's and psd's
+expect_exit 1 "convert --rate 50 of a log with NaN at 2 s, to CSV" "$H" convert "$T/nan200.csv" "$T/wr3.csv" --rate 50
+expect_err "^harness convert: error: $T/nan200.csv: incomplete input (warned above): the output covers the [0-9]* samples before the error$" \
+    "convert --rate: the partial input said as an error, with what the output covers"
 # --rate on fewer than 4 samples: the error names the file in replay as in
 # convert (replay said "too few samples to resample (3)" alone)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' >"$T/three.csv"

@@ -344,6 +344,10 @@ else fail "samples written before the bad row: $n"; fi
 expect_exit 1 "a bad row, merged into a .bin" "$H" merge "$T/phyphox_acc.csv" "$T/gyr_bad.csv" "$T/o.bin"
 expect_exit 1 "info of that .bin: incomplete" "$H" info "$T/o.bin"
 expect_err "truncated: no end record after" "the merged .bin said to be incomplete"
+# exit 1 said as an error, not after warnings alone (as convert's and info's)
+expect_exit 1 "a row of text in the gyroscope's file: the exit said" "$H" merge "$T/phyphox_acc.csv" "$T/gyr_bad.csv" "$T/o.csv"
+expect_err "^harness merge: error: $T/gyr_bad.csv: incomplete input (warned above): the [0-9]* samples written cover its 4999 before the error$" \
+    "the partial merge said as an error, with what it covers"
 
 # the text checks the log reader makes (hx_log.c), made by merge's reader
 # too: a NUL block, a stray delimiter, a cut last line, one sample, a
