@@ -109,7 +109,7 @@ for v in 0x10 " 50" "	50" nan inf 1e999 5x "" -5 0; do
     expect_err "--rate" "convert --rate '$v': the error names the option"
 done
 expect_exit 2 "psd --nfft ' 64' refused" "$H" psd vectors/walk.bin --nfft " 64" --json "$T/p.json"
-expect_err "--nfft ' 64' is not an integer" "psd --nfft ' 64': the error names the option"
+expect_err "--nfft ' 64' is not a whole number" "psd --nfft ' 64': the error names the option"
 expect_exit 2 "psd --nfft 99999999999999999999 refused" "$H" psd vectors/walk.bin --nfft 99999999999999999999
 expect_exit 2 "sim --duration 0x2 refused" "$H" sim --out "$S" --duration 0x2
 expect_err "--duration '0x2' is not a number" "sim --duration 0x2: the error names the option"
@@ -316,6 +316,15 @@ expect_err "--oversample '2.5' is not a whole number" "sim --oversample 2.5: the
 expect_exit 2 "montecarlo --seeds 2.5 refused" "$H" montecarlo --seeds 2.5 --duration 2
 expect_err "--seeds '2.5' is not a whole number" "montecarlo --seeds 2.5: the error names the option"
 expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --duration 1 --seed 1e3
+# and the counts read as long (psd's --nfft and --overlap, simgap's --seeds,
+# allan's --per-octave ...): strtol refused 1.28e2, a whole number, as
+# "not an integer", while montecarlo's --seeds took 1e1
+expect_exit 0 "psd --nfft 1.28e2 --overlap 6.4e1 (whole numbers)" "$H" psd vectors/walk.bin --nfft 1.28e2 --overlap 6.4e1 --out "$T/pe.csv"
+"$H" psd vectors/walk.bin --nfft 128 --overlap 64 --out "$T/pd.csv" >/dev/null 2>&1
+cmp -s "$T/pe.csv" "$T/pd.csv" && pass "psd --nfft 1.28e2 --overlap 6.4e1: the spectrum of --nfft 128 --overlap 64" \
+    || fail "psd --nfft 1.28e2 differs from --nfft 128"
+expect_exit 2 "psd --nfft 128.5 refused" "$H" psd vectors/walk.bin --nfft 128.5
+expect_err "^harness psd: error: --nfft '128.5' is not a whole number in \[8, 4096\]$" "psd --nfft 128.5: a whole number's words and range"
 
 # --- a JSON file is UTF-8 text (RFC 8259) whatever the bytes of a file name
 # in it: a Latin-1 byte (0xe9) is the replacement character U+FFFD, a
