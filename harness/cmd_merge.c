@@ -16,7 +16,8 @@
 static const hx_opt_t k_opts[] = {
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
     { "--units", "SPEC", "units the headers do not name (accel, gyro: or override; a time's unit named wins): "
-                         "time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps", 0 },
+                         "time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps; raw counts: a count's size first "
+                         "(accel=0.061mg)", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -97,8 +98,9 @@ int hx_cmd_merge(int argc, char **argv)
     if (strcmp(a.pos[2], "-") != 0 && hx_check_writable("merge", a.pos[2]) != 0) {
         return HX_EXIT_IO;
     }
-    /* an hour at 400 Hz on each side takes 5 s, each file's reading about
-     * 30 % of it, the writing of the CSV 40 % */
+    /* an hour at 400 Hz on each side takes 4-5 s to a CSV (2 s to a .bin:
+     * docs/harness.md, "merge"), each file's reading about 30 % of it, the
+     * writing of the CSV 40 % */
     hx_progress_start(&pr, "merge", 1.0);
     for (k = 0; k < 2; k++) {
         stage_t st;

@@ -95,7 +95,7 @@ def main():
         t, x = load(a.harness, path)
         if a.rest:
             m = [min(block_sds(x[:, c])) for c in range(6)]
-            print(path, "smallest block sd: accel %.4f m/s^2 (ceiling %.2f), gyro %.5f rad/s (ceiling %.2f)"
+            print(path, "smallest block sd: accel %.4f m/s^2 (ceiling %.3g), gyro %.5f rad/s (ceiling %.3g)"
                   % (max(m[:3]), REST_SD[0], max(m[3:]), REST_SD[1]))
             continue
         if not a.windows:
