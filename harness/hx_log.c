@@ -402,10 +402,15 @@ static int parse_num(const char *s, double *out)
     if (end == s || *end != '\0') {
         return -1;
     }
-    if (v != v || strpbrk(s, "nNiI") != NULL) {
+    if (v != v) {
         return -2;
     }
     if (v > 1.0e300 || v < -1.0e300) {
+        /* "inf" as written, or a decimal number past 1e300 (the letters
+         * looked for here only, off the path of every field in range) */
+        if (strpbrk(s, "nNiI") != NULL) {
+            return -2;
+        }
         *out = v > 0.0 ? 1.0e300 : -1.0e300;
         return -3;
     }
@@ -5477,12 +5482,14 @@ void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, lon
                        double missing, double n)
 {
     char rep[96] = "", gap[192] = "";
+    const double pct = 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0);
+    const char *ms = missing == 1.0 ? "" : "s";
     if (irregular == 1 && repeats + gaps <= 1) {
         /* one interval: what it is, in brackets ("1 interval differs ...,
          * 1 of them a gap (longest ...)" read awkwardly) */
         if (gaps == 1) {
             snprintf(buf, size, " (a gap of %.3g s; about %.0f sample%s missing, %.2g %% of the log)", longest_gap_s,
-                     missing, missing == 1.0 ? "" : "s", 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+                     missing, ms, pct);
         } else {
             snprintf(buf, size, "%s", repeats == 1 ? " (a time stamp repeated)" : "");
         }
@@ -5495,13 +5502,11 @@ void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, lon
     if (gaps > 1) {
         snprintf(gap, sizeof gap, ", %ld of them gaps (longest %.3g s; about %.0f sample%s missing in all, %.2g %% "
                                   "of the log)",
-                 gaps, longest_gap_s, missing, missing == 1.0 ? "" : "s",
-                 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+                 gaps, longest_gap_s, missing, ms, pct);
     } else if (gaps == 1) {
         /* one gap has no "longest" and no "in all" */
         snprintf(gap, sizeof gap, ", 1 of them a gap of %.3g s (about %.0f sample%s missing, %.2g %% of the log)",
-                 longest_gap_s, missing, missing == 1.0 ? "" : "s",
-                 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0));
+                 longest_gap_s, missing, ms, pct);
     }
     snprintf(buf, size, "%s%s", rep, gap);
 }
