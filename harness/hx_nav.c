@@ -209,6 +209,8 @@ static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err
 int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, size_t err_size)
 {
     static fnav_nav_t probe; /* validates the configuration as the core will */
+    static const char k_rejected[] = "navigation configuration rejected by the core";
+    fnav_nav_config_t base;
     int i;
     *cfg = fnav_nav_config_default;
     /* the choices, checked here for every command (montecarlo fills the
@@ -237,6 +239,7 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     if (o->detector != NULL) {
         cfg->stance.detector = strcmp(o->detector, "threshold") == 0 ? FNAV_DETECTOR_THRESHOLD : FNAV_DETECTOR_SHOE;
     }
+    base = *cfg;
     for (i = 0; i < o->nparams; i++) {
         if (set_param(cfg, o->params[i], err, err_size) != 0) {
             return -1;
@@ -244,9 +247,25 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     }
     if (o->rate_hz > 0.0) {
         cfg->stance.rate_hz = (fnav_real_t)o->rate_hz;
+        base.stance.rate_hz = cfg->stance.rate_hz;
     }
     if (fnav_nav_init(&probe, cfg) != FNAV_OK) {
         hx_nav_init_error(cfg, " (--rate)", o->nparams > 0 ? " (a --param value out of range)" : "", err, err_size);
+        /* the core says only that it refuses the whole configuration: name
+         * the --param that it refuses on its own ("--param
+         * event_window_s=0" was "rejected by the core (a --param value out
+         * of range)", the key left to guess) */
+        if (strncmp(err, k_rejected, sizeof k_rejected - 1) == 0) {
+            for (i = 0; i < o->nparams; i++) {
+                fnav_nav_config_t one = base;
+                char ignored[8];
+                if (set_param(&one, o->params[i], ignored, sizeof ignored) == 0 &&
+                    fnav_nav_init(&probe, &one) != FNAV_OK) {
+                    snprintf(err, err_size, "%s: --param %s is out of range", k_rejected, o->params[i]);
+                    break;
+                }
+            }
+        }
         return -1;
     }
     return 0;

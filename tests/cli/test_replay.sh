@@ -53,6 +53,11 @@ else fail "event_window_s=0.1: the strides CSV is the default's"; fi
 expect_exit 0 "--param event_window_s=0.4" "$H" replay vectors/walk.bin --quiet --strides "$T/ew4.csv" --param event_window_s=0.4
 expect_err "searched over 399 ms (of 400)" "event_window_s=0.4 beyond the 398 Hz walk's jerk history: replay says so"
 expect_exit 2 "--param event_window_s=0 refused" "$H" replay vectors/walk.bin --quiet --param event_window_s=0
+# the refusal names the --param the core refuses on its own, among others
+# (it said "a --param value out of range", the key left to guess)
+expect_exit 2 "--param event_window_s=0 refused beside a good one" "$H" replay vectors/walk.bin --quiet \
+    --param gamma=2e5 --param event_window_s=0
+expect_err "rejected by the core: --param event_window_s=0 is out of range" "the refused --param named"
 expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexistent/profile.txt
 expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
@@ -66,7 +71,7 @@ expect_exit 2 "--param gyro_bias_prior_dps=1e22 refused, not an abort" "$H" repl
     --param gyro_bias_prior_dps=1e22
 expect_err "rejected by the core" "a gyro-bias prior whose square overflows: refused"
 expect_exit 2 "--param sigma_a=1e-25 refused" "$H" replay vectors/walk.bin --quiet --param sigma_a=1e-25
-expect_err "rejected by the core" "a SHOE weight whose square is 0: refused"
+expect_err "rejected by the core: --param sigma_a=1e-25 is out of range" "a SHOE weight whose square is 0: refused, named"
 # a value refused for another key's: both keys named with the rule ("--param
 # align_max_s=2" was "rejected by the core" for the default realign_min_s 3)
 expect_exit 2 "align_max_s below realign_min_s" "$H" replay vectors/walk.bin --quiet --param align_max_s=2
@@ -2214,7 +2219,7 @@ if [ "$rc" -eq 0 ] && ! grep -q "ring of" "$T/stand820.err"; then
 if [ "$rc" -eq 0 ] && ! grep -q "ring of" "$T/wzc.err"; then
     pass "min_zupt_cycle at 400 Hz: fits, nothing said"; else fail "min_zupt_cycle 400 Hz: rc $rc $(cat "$T/wzc.err")"; fi
 "$H" replay vectors/walk.bin --param min_zupt_cycle=2 > /dev/null 2> "$T/wzc2.err"; rc=$?
-if [ "$rc" -eq 2 ] && grep -q "a --param value out of range" "$T/wzc2.err"; then
+if [ "$rc" -eq 2 ] && grep -q "rejected by the core: --param min_zupt_cycle=2 is out of range" "$T/wzc2.err"; then
     pass "min_zupt_cycle=2 refused (exit 2)"; else fail "min_zupt_cycle=2: rc $rc $(cat "$T/wzc2.err")"; fi
 
 # --- the 2-D path of replay --plot (and of live's plot) spans the same
