@@ -5,6 +5,7 @@
 #include "hx_motion.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -151,13 +152,44 @@ typedef struct {
  * rest is the variants' replays; about a fifth with one variant). */
 #define MC_SIM_SHARE 0.2
 
+/* The memory this run may take: MemAvailable of /proc/meminfo (what can be
+ * had without swapping: the free memory and the caches the kernel can
+ * drop), else, where it cannot be read, the machine's physical memory;
+ * *what says which. 0 when neither is known. */
+static double mc_memory_available(const char **what, double *total)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    double avail = 0.0;
+    char line[128];
+    FILE *f = fopen("/proc/meminfo", "r");
+    *total = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
+    if (f != NULL) {
+        while (fgets(line, sizeof line, f) != NULL) {
+            double kb;
+            if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1 && kb > 0.0) {
+                avail = kb * 1024.0;
+                break;
+            }
+        }
+        fclose(f);
+    }
+    if (avail > 0.0) {
+        *what = "available";
+        return avail;
+    }
+    *what = "in this machine";
+    return *total;
+}
+
 /* A run's samples are held for the pairing with the truth, and every
  * growth bin has its accumulators, its result and the caller's output of it
  * (montecarlo's JSON, about 1.7 KB a bin and variant): refuse, before
- * simulating anything, what cannot fit in this machine's memory. Standing
+ * simulating anything, what cannot fit in the memory available. Standing
  * 1e6 s at 200 Hz (38 GB of samples) would simulate for minutes and grow to
  * about 16 GB before "out of memory"; an hour's walk at --bin 0.01 with
- * --json peaked at 774 MB uncounted, 1e6 s at 240 GB after the runs. */
+ * --json peaked at 774 MB uncounted, 1e6 s at 240 GB after the runs. Until
+ * 2026-12-07 the check took the machine's total memory: a run of 25.2 GB
+ * on a machine of 25.3 GB passed, and swapped or was killed. */
 static int mc_memory_check(const hx_mc_config_t *cfg, size_t nt, int nbins, int nvar, double duration_s, char *err,
                            size_t err_size)
 {
@@ -165,26 +197,32 @@ static int mc_memory_check(const hx_mc_config_t *cfg, size_t nt, int nbins, int 
                            nvar * ((double)sizeof(mc_acc_t) + (double)sizeof(hx_mc_bin_t) + cfg->out_bytes_per_bin);
     const double ticks = (double)nt * (double)sizeof(mc_tick_t), bins = (double)nbins * per_bin;
     const double rate = (double)cfg->sim.err.rate_hz;
-    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    double have = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
+    const char *what = "";
+    double total = 0.0, have = mc_memory_available(&what, &total);
+    char mem[96];
     if (!((have > 0.0 && ticks + bins > have) || ticks + bins > (double)SIZE_MAX)) {
         return 0;
+    }
+    if (have < total) {
+        snprintf(mem, sizeof mem, "the %.1f GB of memory available (of %.1f GB)", have / 1e9, total / 1e9);
+    } else {
+        snprintf(mem, sizeof mem, "the %.1f GB of memory %s", have / 1e9, what);
     }
     if (ticks >= bins || !(have > ticks)) {
         snprintf(err, err_size,
                  "%.0f samples (%.6g s at %.6g Hz) are %.1f GB of samples and truth to hold (and %.1f GB of growth "
-                 "bins), more than this machine's %.1f GB of memory: shorten --duration or lower --rate",
-                 (double)nt, duration_s, rate, ticks / 1e9, bins / 1e9, have / 1e9);
+                 "bins), more than %s: shorten --duration or lower --rate (--seeds does not matter: one run is "
+                 "held at a time)",
+                 (double)nt, duration_s, rate, ticks / 1e9, bins / 1e9, mem);
     } else {
         /* the bins that fit beside the samples, and the --bin that makes
          * no more of them */
         const double fit = floor((have - ticks) / per_bin);
         snprintf(err, err_size,
                  "--bin %g s makes %d growth bins over %.6g s, %.1f GB to hold (%.0f bytes a bin for %d variant%s%s) "
-                 "beside %.1f GB of samples and truth, more than this machine's %.1f GB of memory: a larger --bin "
-                 "(%.3g s or more)",
+                 "beside %.1f GB of samples and truth, more than %s: a larger --bin (%.3g s or more)",
                  cfg->bin_s, nbins, duration_s, bins / 1e9, per_bin, nvar, nvar == 1 ? "" : "s",
-                 cfg->out_bytes_per_bin > 0.0 ? ", the JSON's included" : "", ticks / 1e9, have / 1e9,
+                 cfg->out_bytes_per_bin > 0.0 ? ", the JSON's included" : "", ticks / 1e9, mem,
                  fit >= 1.0 ? duration_s / fit : duration_s);
     }
     return -1;
