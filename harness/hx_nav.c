@@ -3041,7 +3041,21 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
     if (t->input_complete == 0) {
         /* the run stopped early: at a bad line of the log, or at the
-         * trajectory output (a closed pipe, a full disk) */
+         * trajectory output (a closed pipe, a full disk); before the
+         * first sample (a log of a header alone) there is nothing to
+         * align or sum, said as that (until 2026-12-07 "stopped after 0
+         * samples" and "NOT ALIGNED (the run stopped before a still
+         * period ...)") */
+        if (st->samples == 0u) {
+            if (t->output_failed) {
+                fprintf(f, "stopped           before the first sample: %s (the error above)\n", t->input_error);
+            } else {
+                fprintf(f, "stopped           before the first sample, at the input error above: no samples to align "
+                           "or navigate\n");
+            }
+            fprintf(f, "alignment         none: no samples\n");
+            return;
+        }
         if (t->output_failed) {
             fprintf(f, "stopped           after %u samples: %s (the error above); every figure covers those samples\n",
                     st->samples, t->input_error);

@@ -1194,6 +1194,18 @@ expect_out_re "^alignment +NOT ALIGNED \(no still period long enough: the error 
 if grep -q "^stopped" "$T/out"; then fail "never aligned: a 'stopped' line: $(grep '^stopped' "$T/out")"; else pass "never aligned: no 'stopped' line (the log was read to its end)"; fi
 if json "$T/moving.json" 'j["aligned"] is False and j["complete"] is True and "error" not in j and j["health"]["samples"] == 4000'; then
     pass "never aligned: the JSON says aligned false, complete true (read to its end)"; else fail "never aligned JSON: $(tr -d '\n\t' < "$T/moving.json" | head -c 300)"; fi
+# a log of a header alone: the summary says there were no samples (until
+# 2026-12-07 "stopped after 0 samples, ...; every figure covers those
+# samples" and "NOT ALIGNED (the run stopped before a still period long
+# enough was found)", as if a still period had been looked for)
+echo "t,ax,ay,az,gx,gy,gz" > "$T/header.csv"
+expect_exit 1 "a log of a header alone" "$H" replay "$T/header.csv"
+expect_err "header.csv: no samples" "a log of a header alone: the error says no samples"
+expect_out_re "^stopped +before the first sample, at the input error above: no samples to align or navigate$" \
+    "a log of a header alone: the stopped line says there were no samples"
+expect_out_re "^alignment +none: no samples$" "a log of a header alone: the alignment line says no samples"
+if grep -q "NOT ALIGNED\|after 0 samples" "$T/out"; then fail "a log of a header alone: $(grep 'NOT ALIGNED\|after 0' "$T/out")"
+else pass "a log of a header alone: no 'NOT ALIGNED', no 'after 0 samples'"; fi
 expect_exit 0 "0.30 s still aligns" "$H" replay "$T/still61.csv"
 expect_out_re "^alignment +0\.2[0-9] s still" "a still period under align_min_s but over align_short_s aligns"
 # the only still period at the log's very end: 1 s of swing, then 44 still
