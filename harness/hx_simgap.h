@@ -772,7 +772,7 @@ typedef struct {
     double seg_end_s[SG_NSEG][SG_MAX_BLK];   /**< ... the sample after its last (the last's + 1/rate at the log's end) */
     sg_opts_t opts;
     int confident;
-    char why[256];            /**< too short: why */
+    char why[512];            /**< too short: why */
     double tau_span_dec[SG_NCH]; /**< decades of tau with a tight interval on the held-out segment */
     int constant[SG_NCH];     /**< the channel holds one value over the whole log (stuck, or its noise
                                    below the output's step): nothing to test; static logs: not analysed */

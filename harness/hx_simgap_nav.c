@@ -1879,16 +1879,20 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     /* a confident answer: at least 10 held-out stances, whose mean
      * first-update NIS (chi2_3 / 3 per stance) is known to -44 % / +57 %
      * (95 %: the quantiles of chi2_30 / 30); +-50 % would take 13. The
-     * interval is computed, not typed */
+     * interval is computed, not typed; the remedy is named (until
+     * 2026-12-07 it was not) */
     r->confident = 1;
     if (nv->nst[SG_HOLD] < NAV_MIN_HOLD) {
         const double dof = 3.0 * NAV_MIN_HOLD;
         r->confident = 0;
         snprintf(r->why, sizeof r->why,
                  "the held-out segment has %d stance%s with zero-velocity updates; the mean innovation of fewer than "
-                 "%d is not known to -%.0f %% / +%.0f %% (95 %%)",
+                 "%d is not known to -%.0f %% / +%.0f %% (95 %%): a longer walk, %d or more stances in its last "
+                 "%.0f %%%s%g%s",
                  nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD, 100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
-                 100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0));
+                 100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0), NAV_MIN_HOLD, 100.0 * (1.0 - r->opts.fit_frac),
+                 r->opts.fit_frac > 0.2 + 1e-9 ? " (or a lower --fit-frac, " : " (--fit-frac ", r->opts.fit_frac,
+                 r->opts.fit_frac > 0.2 + 1e-9 ? " now, to hold out more of it)" : ", holds out the most it can)");
     }
     /* baseline noise */
     if (r->opts.profile != NULL) {

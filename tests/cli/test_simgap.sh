@@ -567,6 +567,9 @@ json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stance" in j["too_
 # the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
 # 1.566 at 95 % (scipy chi2.ppf), not to +-50 %
 expect_err "of fewer than 10 is not known to -44 % / +57 % (95 %)" "short walk: the interval of 10 stances"
+# and the remedy is named (until 2026-12-07 it was not)
+expect_err "(95 %): a longer walk, 10 or more stances in its last 40 % (or a lower --fit-frac, 0.6 now, to hold out more of it)" \
+    "short walk: the remedy named"
 
 # the domain forced against the detection is said in the summary (the JSON
 # has domain_detected; a walk analysed as a static log is a user's choice)
