@@ -3278,10 +3278,13 @@ int hx_cmd_allan(int argc, char **argv)
     if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
         /* the paper's sigma_v, the ADEV at 1 s, lies beyond the tenth of the
          * record the identification keeps to: said for the paper's column of
-         * a 5 s log as for the profile's bound (write_profile()) */
-        hx_warn(CMD, "%s: the paper's sigma_v of %d channel%s (its column of the parameter table: the ADEV at 1 s) "
-                     "is read beyond the longest tau the identification keeps to, %.3g s (--max-tau-frac of the "
-                     "%.3g-s record): it rests on a few averages; record %.3g s or more (docs/allan.md, \"Command\")",
+         * a 5 s log as for the profile's bound (write_profile()), in words
+         * a user knows (until 2026-12-07 "the paper's sigma_v of 6 channels
+         * (its column of the parameter table: the ADEV at 1 s)") */
+        hx_warn(CMD, "%s: the white-noise density sigma_v of %d channel%s (the bias model's \"paper III.C as "
+                     "written\" columns, which take it as the Allan deviation at tau = 1 s) is read beyond the "
+                     "longest tau the identification keeps to, %.3g s (--max-tau-frac of the %.3g-s record): it "
+                     "rests on a few averages; record %.3g s or more (docs/allan.md, \"Command\")",
                 R->source, npaper, npaper == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
                 (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }

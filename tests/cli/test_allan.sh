@@ -211,8 +211,8 @@ json "$T/badfail.json" 'j["complete"] is False' && [ "$(grep -c '^series,' "$T/b
 # identification keeps to, without a word (only the profile's bound warned): now a warning says so, as for the
 # profile; a 10 s record, whose 1 s lies within its tenth, gets none
 expect_exit 0 "5 s: the paper's column" "$H" allan "$T/five.csv" --no-sim --quiet
-expect_err "five.csv: the paper's sigma_v of 6 channels (its column of the parameter table: the ADEV at 1 s) is read beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more (docs/allan.md, \"Command\")" \
-    "a 5 s log: the paper's sigma_v beyond the identified range is said"
+expect_err "five.csv: the white-noise density sigma_v of 6 channels (the bias model's \"paper III.C as written\" columns, which take it as the Allan deviation at tau = 1 s) is read beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more (docs/allan.md, \"Command\")" \
+    "a 5 s log: the paper's sigma_v beyond the identified range is said (in words: until 2026-12-07 'the paper's sigma_v of 6 channels (its column of the parameter table: the ADEV at 1 s)')"
 expect_exit 0 "10 s: the paper's column" "$H" allan "$T/ten.csv" --no-sim --quiet
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the paper's sigma_v warned as beyond the range" ||
     pass "10 s: the paper's sigma_v within the identified range, no warning"
