@@ -1240,7 +1240,10 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
     cJSON *root, *a, *u;
     int k = 0, i, n;
     if (f == NULL) {
-        snprintf(why, why_size, "cannot open %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
+        /* with the reason: "cannot open 1-1.json" alone did not say that
+         * the trial's events file is missing */
+        snprintf(why, why_size, "cannot open %.160s (%s)", strrchr(path, '/') ? strrchr(path, '/') + 1 : path,
+                 strerror(errno));
         return -1;
     }
     if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || size > (16L << 20) || fseek(f, 0, SEEK_SET) != 0 ||

@@ -325,7 +325,7 @@ bad=$(awk '/^\|/ { l = $0; gsub(/\\\|/, "", l); n = gsub(/\|/, "", l);
      !/^\|/ { intab = 0 }' "$T/pipe.md")
 if [ -z "$bad" ] && grep -q '^| a\\|b | - |' "$T/pipe.md" && grep -q '^| openshoe_square2/c\\|d.csv | ' "$T/pipe.md" &&
     grep -q '^| openshoe_square2/e?f.csv | ' "$T/pipe.md" &&
-    [ "$(grep -c '^| 1\\|1 | \(left\|right\) | - | .* | not run: cannot open 1\\|1.json |$' "$T/pipe.md")" -eq 2 ]; then
+    [ "$(grep -c '^| 1\\|1 | \(left\|right\) | - | .* | not run: cannot open 1\\|1.json (No such file or directory) |$' "$T/pipe.md")" -eq 2 ]; then
     pass "names with '|' and a line break: escaped, every row as wide as its table"
 else fail "names with '|': rows with a wrong cell count: $bad"; fi
 rm -rf "$B"
@@ -418,10 +418,10 @@ if [ -n "$D" ]; then
     if grep -q "^| SensorConnectData_44 | - |.*| not run: no IMU log SensorConnectData_44_imu.csv |" "$T/orph.md" &&
         grep -q "^| 2018-01-01-10-00-00 | - |.*| not run: no IMU log 2018-01-01-10-00-00_imu.csv |" "$T/orph.md"; then
         pass "a truth file without its IMU log keeps a row"; else fail "truth without log: $(grep 'not run' "$T/orph.md")"; fi
-    if [ "$(grep -c "^| 4-14 | \(left\|right\) | - |.*| not run: cannot open 4-14.json |" "$T/orph.md")" -eq 2 ] &&
+    if [ "$(grep -c "^| 4-14 | \(left\|right\) | - |.*| not run: cannot open 4-14.json (No such file or directory) |" "$T/orph.md")" -eq 2 ] &&
         grep -q "^| 4-13 | right | - |.*| not run: no IMU log 4-13_rf.txt |" "$T/orph.md" &&
         grep -q "^| 4-13 | left | 15 |" "$T/orph.md"; then
-        pass "ipol logs without their events, a trial without one foot: rows"; else fail "ipol orphans: $(grep '^| 4-1' "$T/orph.md")"; fi
+        pass "ipol logs without their events (the reason said), a trial without one foot: rows"; else fail "ipol orphans: $(grep '^| 4-1' "$T/orph.md")"; fi
     if grep -q '"failed_runs":[[:space:]]*5' "$T/orph.json"; then pass "each counted as a failed run"; else
         fail "orphans: $(grep -o '"failed_runs":[^,]*' "$T/orph.json")"; fi
     expect_err "Measurement_100601_8_data_inert.TXT: not read" "a file under no name of its set is warned about"
