@@ -3156,10 +3156,13 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->n < 2u || (double)R->n < samples_needed(R)) {
         /* no tau in range: every table would be empty and every value n/a,
-         * exit 0 (2 samples) */
-        hx_error(CMD, "%s: %lu %s too few for any Allan point: the shortest tau (%lu sample%s) needs at "
+         * exit 0 (2 samples). After a reader's error the samples are those
+         * before it, and said so: "bad.txt: 2 samples are too few" under
+         * "bad.txt:3: not a number" read as the file's length */
+        hx_error(CMD, "%s: %s%lu %s%s%s too few for any Allan point: the shortest tau (%lu sample%s) needs at "
                       "least %.0f samples (tau up to %g of the record, --max-tau-frac)",
-                 path, (unsigned long)R->n, R->n == 1u ? "sample is" : "samples are", (unsigned long)R->grid[0],
+                 path, input_rc > 0 ? "the " : "", (unsigned long)R->n, R->n == 1u ? "sample" : "samples",
+                 input_rc > 0 ? " before the error" : "", R->n == 1u ? " is" : " are", (unsigned long)R->grid[0],
                  R->grid[0] == 1u ? "" : "s",
                  samples_needed(R), R->tau_max_frac);
         free_run(R);

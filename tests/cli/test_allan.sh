@@ -101,6 +101,12 @@ grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with it
 # the closing warning names the file too, as allan's others (it named none)
 expect_err "warning: .*bad.txt: analysing the 3000 samples before the error" "what is analysed after a bad line: the file named"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
+# a bad line too early for any Allan point: the samples counted are those before the error, and said so
+# (it said "short.txt: 2 samples are too few" under "short.txt:3: not a number", as if the file's length)
+printf '1\n2\noops\n4\n' >"$T/short.txt"
+expect_exit 1 "bad line before any Allan point" "$H" allan --series "$T/short.txt" --rate 1 --no-sim --quiet
+expect_err "short.txt: the 2 samples before the error are too few for any Allan point" \
+    "too few samples before a bad line: said to be those before the error"
 # --json says so, as info's, replay's, psd's and simgap's: complete false and
 # the reader's error (not neither), and a log read to its end complete true
 # without an error
