@@ -3182,10 +3182,12 @@ int hx_cmd_allan(int argc, char **argv)
 
     if (hx_arg(&a, "--m") == NULL && R->ngrid > 0u && tau_max_samples(R) > (double)R->grid[R->ngrid - 1u] * 1.01) {
         /* a long fast log (12 h at 1 kHz: 10 % is 4,320 s) outgrows the core's
-         * grid (2^20 samples, 1,049 s at 1 kHz): say where the curve ends */
-        hx_warn(CMD, "%s: %g %% of the record is %.4g s, beyond the longest tau of the grid (%lu samples = %.4g s, "
-                     "FNAV_ALLAN_TAU_MAX): longer tau are not computed, and an AR(1) bias whose bump lies beyond is "
-                     "not identified",
+         * grid (2^20 samples, 1,049 s at 1 kHz): say where the curve ends, and
+         * the option that moves it (FNAV_ALLAN_TAU_MAX, which it named, is
+         * derived from FNAV_ALLAN_MAX_LEVELS, not set) */
+        hx_warn(CMD, "%s: %g %% of the record is %.4g s, beyond the longest tau of the grid (%lu samples = %.4g s; "
+                     "FNAV_ALLAN_MAX_LEVELS in fnav_config.h raises it): longer tau are not computed, and an AR(1) "
+                     "bias whose bump lies beyond is not identified",
                 path, 100.0 * R->tau_max_frac, tau_max_samples(R) / R->rate_hz, (unsigned long)R->grid[R->ngrid - 1u],
                 (double)R->grid[R->ngrid - 1u] / R->rate_hz);
     }

@@ -303,6 +303,8 @@ awk 'BEGIN { for (i = 0; i < 2200000; i++) print (i * 7919) % 13 }' >"$T/long.tx
 expect_exit 0 "a record longer than the grid" "$H" allan --series "$T/long.txt" --rate 1000 --estimator streaming \
     --max-tau-frac 0.5 --no-sim --quiet
 expect_err "beyond the longest tau of the grid (1048576 samples = 1049 s" "the grid's end is named"
+# ... and the option that moves it, one fnav_config.h sets (it named FNAV_ALLAN_TAU_MAX, derived, not set)
+expect_err "1049 s; FNAV_ALLAN_MAX_LEVELS in fnav_config.h raises it)" "the grid's end: the option that raises it"
 rm -f "$T/long.txt"
 
 # Exact estimator against numpy (double, every tau, both estimators, term counts) on a 10 MHz
