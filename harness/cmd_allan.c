@@ -534,6 +534,11 @@ static int parse_deviations(run_t *R, const char *list)
     }
     for (i = 0; i < L.n; i++) {
         hx_dev_t k;
+        if (strcmp(L.el[i], "all") == 0) {
+            /* it said "unknown 'all' (... or all)": the name is known, its place is not */
+            hx_error(CMD, "--deviation: 'all' stands alone, not in a list with other names ('%s')", list);
+            return -1;
+        }
         if (hx_dev_parse(L.el[i], &k) != 0) {
             hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev, pdev, mtotdev, ttotdev, "
                           "htotdev or all)", L.el[i]);

@@ -905,6 +905,9 @@ expect_err "--deviation: 'mdev' given twice" "--deviation's repeat named"
 expect_exit 2 "--deviation with a trailing comma" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet \
     --deviation mdev,
 expect_err "--deviation: an empty element in 'mdev,'" "--deviation's empty element named"
+# 'all' in a list: it said "unknown 'all' (... or all)", naming as allowed the name it refused
+expect_exit 2 "--deviation all in a list" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet --deviation all,mdev
+expect_err "--deviation: 'all' stands alone, not in a list with other names ('all,mdev')" "--deviation all in a list named"
 expect_exit 2 "--channels with a trailing comma" "$H" allan vectors/walk.bin --no-sim --quiet --channels ax,
 expect_err "--channels: an empty element in 'ax,'" "--channels' empty element named"
 expect_exit 2 "--channels with a leading comma" "$H" allan vectors/walk.bin --no-sim --quiet --channels ,gx
