@@ -3012,6 +3012,17 @@ int hx_cmd_allan(int argc, char **argv)
                       "of the --out CSV)");
         return HX_EXIT_USAGE;
     }
+    {
+        /* one message for every value but 1, 2 and 4: the range check's
+         * "not a whole number in [1, 4]" for 5 or 0 implied that 3 was
+         * taken, and 3 then got this message */
+        const char *po = hx_arg(&a, "--per-octave");
+        double pv = 0.0;
+        if (po != NULL && (hx_parse_number(po, &pv) != 0 || !(pv == 1.0 || pv == 2.0 || pv == 4.0))) {
+            hx_error(CMD, "--per-octave must be 1, 2 or 4, not '%s'", po);
+            return HX_EXIT_USAGE;
+        }
+    }
     R = (run_t *)calloc(1, sizeof *R);
     if (R == NULL) {
         hx_error(CMD, "out of memory");
@@ -3027,11 +3038,6 @@ int hx_cmd_allan(int argc, char **argv)
         hx_arg_whole(&a, "--refits", 0.0, 999999.0, &refits_d) != 0 ||
         hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 ||
         hx_arg_double(&a, "--max-work", 1.0, 1e18, &R->max_work) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
-        free(R);
-        return HX_EXIT_USAGE;
-    }
-    if (per_octave == 3) {
-        hx_error(CMD, "--per-octave must be 1, 2 or 4, not '%s'", hx_arg(&a, "--per-octave"));
         free(R);
         return HX_EXIT_USAGE;
     }

@@ -661,6 +661,9 @@ bad_value "psd --window hanning" "error: --window must be hamming, hann or rect,
 bad_value "psd --dc mean" "error: --dc must be segment, linear, global, none or exclude, not 'mean'" "$H" psd vectors/walk.bin --dc mean
 bad_value "psd --spec-axis x" "error: --spec-axis must be one of ax, ay, az, gx, gy, gz, not 'x'" "$H" psd vectors/walk.bin --spec-axis x --plot "$T/p"
 bad_value "allan --per-octave 3" "error: --per-octave must be 1, 2 or 4, not '3'" "$H" allan vectors/walk.bin --per-octave 3
+# 5 and 0 said "not a whole number in [1, 4]", as if 3 were taken
+bad_value "allan --per-octave 5" "error: --per-octave must be 1, 2 or 4, not '5'" "$H" allan vectors/walk.bin --per-octave 5
+bad_value "allan --per-octave 0" "error: --per-octave must be 1, 2 or 4, not '0'" "$H" allan vectors/walk.bin --per-octave 0
 bad_value "allan --estimator fast" "error: --estimator must be exact or streaming, not 'fast'" "$H" allan vectors/walk.bin --estimator fast
 bad_value "allan --m 10,1" "error: --m must be positive whole numbers separated by commas, strictly ascending, at most [0-9]*, not '10,1'" "$H" allan vectors/walk.bin --estimator exact --m 10,1
 bad_value "sim --mount 0,10" "error: --mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '0,10'" "$H" sim --out "$T/m.csv" --mount 0,10
