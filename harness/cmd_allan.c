@@ -3060,7 +3060,13 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (series == NULL && (hx_flag(&a, "--phase") || hx_arg(&a, "--column") != NULL)) {
-        hx_error(CMD, "--phase and --column apply to --series only");
+        /* named as given, as --unit with a log and the log's options with
+         * a series are (it named both for either) */
+        if (hx_flag(&a, "--phase")) {
+            hx_error(CMD, "--phase applies to --series only (a log holds rates and specific forces, not a phase)");
+        } else {
+            hx_error(CMD, "--column applies to --series only (a log's columns are named with --columns MAP)");
+        }
         free(R);
         return HX_EXIT_USAGE;
     }

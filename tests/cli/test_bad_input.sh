@@ -664,6 +664,9 @@ bad_value "allan --per-octave 3" "error: --per-octave must be 1, 2 or 4, not '3'
 # 5 and 0 said "not a whole number in [1, 4]", as if 3 were taken
 bad_value "allan --per-octave 5" "error: --per-octave must be 1, 2 or 4, not '5'" "$H" allan vectors/walk.bin --per-octave 5
 bad_value "allan --per-octave 0" "error: --per-octave must be 1, 2 or 4, not '0'" "$H" allan vectors/walk.bin --per-octave 0
+# --phase or --column with a log: it named both for either
+bad_value "allan LOG --column 2" "error: --column applies to --series only (a log's columns are named with --columns MAP)" "$H" allan vectors/walk.bin --column 2
+bad_value "allan LOG --phase" "error: --phase applies to --series only (a log holds rates and specific forces, not a phase)" "$H" allan vectors/walk.bin --phase
 bad_value "allan --estimator fast" "error: --estimator must be exact or streaming, not 'fast'" "$H" allan vectors/walk.bin --estimator fast
 bad_value "allan --m 10,1" "error: --m must be positive whole numbers separated by commas, strictly ascending, at most [0-9]*, not '10,1'" "$H" allan vectors/walk.bin --estimator exact --m 10,1
 bad_value "sim --mount 0,10" "error: --mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '0,10'" "$H" sim --out "$T/m.csv" --mount 0,10
