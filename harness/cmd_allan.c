@@ -1698,10 +1698,14 @@ static void print_regions(const run_t *R, const chan_t *ch)
                ch->periodic[j + 1] == ch->periodic[i]) {
             j++;
         }
-        /* "; " between the ranges, none after the last (it ended the line) */
-        printf("%s %s %s-%s s", nreg++ > 0 ? ";" : "", noise_name(ch, i),
-               fmt_s(b1, sizeof b1, (double)ch->res[i].tau / R->rate_hz),
-               fmt_s(b2, sizeof b2, (double)ch->res[j].tau / R->rate_hz));
+        /* "; " between the ranges, none after the last (it ended the line);
+         * a region of one tau is that tau ("white 0.8 s", not "0.8-0.8 s") */
+        printf("%s %s %s", nreg++ > 0 ? ";" : "", noise_name(ch, i),
+               fmt_s(b1, sizeof b1, (double)ch->res[i].tau / R->rate_hz));
+        if (j > i) {
+            printf("-%s", fmt_s(b2, sizeof b2, (double)ch->res[j].tau / R->rate_hz));
+        }
+        printf(" s");
         i = j + 1;
     }
     printf("%s\n", nreg == 0 ? " none" : "");

@@ -1317,6 +1317,11 @@ if grep -E 'tau <=|noise types' "$T/out" | grep -q 'e+0'; then fail "a tau in e-
 else pass "no tau in e-notation"; fi
 expect_out_re "^  noise types: .*[0-9] s$" "the noise-types line ends with its last range"
 if grep -q '^  noise types:.*;$' "$T/out"; then fail "the noise-types line ends with ';'"; else pass "no stray ';'"; fi
+# a region of one tau is that tau, "flicker 8 s", not "flicker 8-8 s" (white + random walk, --m 1,2,4,8,2000,4000)
+awk 'BEGIN { s = 1; w = 0; for (i = 0; i < 40000; i++) { s = (s * 1103515245 + 12345) % 2147483648
+    r = s / 2147483648.0 - 0.5; w += r * 0.05; print r + w } }' >"$T/wrw.txt"
+expect_exit 0 "white + random walk at six --m" "$H" allan --series "$T/wrw.txt" --rate 1 --no-sim --m 1,2,4,8,2000,4000
+expect_out "noise types: white 1-4 s; flicker 8 s; rate-random-walk 2000-4000 s" "a noise-type region of one tau"
 # the same in the profile's warnings on a 12,000-s log: "tau <= 1.2e+03 s", "longest tau with data, 5.12e+03 s"
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 24000; i++)
      printf "%.1f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 2, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
