@@ -845,8 +845,11 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     if (R->rate_hz <= 0.0 && rc == 0 && R->n < 2u) {
         return 0; /* one sample has no interval: the caller names the samples needed, not --rate */
     }
-    if (R->rate_hz <= 0.0 && rc != 0 && R->n == 0u) {
-        return -1; /* the reader's error ("no samples") said it */
+    if (rc != 0 && R->n == 0u) {
+        /* the reader's error ("no samples") said it; also where the format
+         * names a rate (ipol, a data set's nominal rate), not a second error
+         * "0 samples are too few for any Allan point" after it */
+        return -1;
     }
     if (R->rate_hz <= 0.0) {
         hx_error(CMD, "%s: %s", path,

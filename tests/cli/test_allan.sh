@@ -244,6 +244,14 @@ grep -q "give --rate" "$T/err" && fail "a 1-sample log: told to give --rate" || 
 expect_exit 1 "a 1-sample log with --rate" "$H" allan "$T/one.csv" --rate 100 --no-sim --quiet
 expect_err "one.csv: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample log with --rate: the samples it needs are named"
+# a header without samples in a format that names its rate (ipol's "Acquisition
+# frequency"): the reader's "no samples" alone, not a second error after it
+# "0 samples are too few for any Allan point" (cli_mutation_sweep.py --seed 100, c0064)
+printf 'Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n' >"$T/hdr_ipol.txt"
+expect_exit 1 "an ipol header without samples" "$H" allan "$T/hdr_ipol.txt" --no-sim --quiet
+expect_err "hdr_ipol.txt: no samples" "an ipol header without samples: no samples said"
+[ "$(grep -c "error:" "$T/err")" -eq 1 ] && pass "an ipol header without samples: one error" ||
+    fail "an ipol header without samples: $(grep -c "error:" "$T/err") errors"
 printf '1\n' >"$T/one.txt"
 expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
 expect_err "one.txt: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
