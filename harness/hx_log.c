@@ -2939,7 +2939,12 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
-            set_err(r, "%s:%ld: not a GX2 data line", r->path, r->stats.lines);
+            /* what a data line starts with, and what this one does (not
+             * the bare "not a GX2 data line" of a row that lost its first
+             * field) */
+            set_err(r, "%s:%ld: not a GX2 data line: its first field ('%.20s') is not the command byte in hex "
+                       "(0x..., 0xcb in the OpenShoe logs) that a 3DM-GX2 data line starts with",
+                    r->path, r->stats.lines, n == 0 ? "" : f[0]);
             return FNAV_E_FORMAT;
         }
     }

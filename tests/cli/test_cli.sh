@@ -432,6 +432,10 @@ expect_err "plain.csv: no 'Header:' line found" "--from gx2: the missing Header:
 printf 'Header:\n1.0 2.0 3.0\n' >"$T/gx2.txt"
 expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.txt" --from gx2 --quiet
 expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
+# and why: its first field is not the hex command byte a data line starts with (a row that lost that field
+# said only "not a GX2 data line"; cli_mutation_sweep.py --seed 100, c0070)
+expect_err "gx2.txt:2: not a GX2 data line: its first field ('1.0') is not the command byte in hex (0x..., 0xcb" \
+    "--from gx2: what a GX2 data line starts with said"
 rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
 
 # ... and the header checks of the other importers (run by no other test: make
