@@ -2246,8 +2246,11 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                 r->path, r->stats.lines, base, base == 0 ? " (pandas' header of an array)" : "", what[i], names[i],
                 base, base + n - 1, base);
     } else if (all_numeric(f, n)) {
-        set_err(r, "%s:%ld: the first line is data, not a header: a log of format %s starts with its header (%s)%s",
-                r->path, r->stats.lines, hx_format_name(r->meta.format),
+        /* "the first line" only where it is line 1 (not ipol's line 2,
+         * after its "Acquisition frequency", nor a line after comments) */
+        set_err(r, "%s:%ld: the %s is data, not a header: a log of format %s starts with its header (%s)%s",
+                r->path, r->stats.lines, r->stats.lines > 1 ? "line where the header belongs" : "first line",
+                hx_format_name(r->meta.format),
                 r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md",
                 r->meta.format == HX_FMT_CSV && n >= 7 /* fields enough for a time and the six channels */
                     ? "; a log without one: give its columns by number, --columns t=1,ax=2,ay=3,az=4,gx=5,gy=6,"
