@@ -868,9 +868,15 @@ int hx_cmd_psd(int argc, char **argv)
     }
     if (!(rate > 0.0)) {
         /* a bad line after these samples was warned when it was read */
-        hx_error(CMD, "%s: %s", a.pos[0],
-                 log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0] ? "sample rate unknown: every time stamp is the same"
-                                                                 : "sample rate unknown; give --input-rate");
+        if (log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0]) {
+            /* the count and the question simgap and allan ask (--input-rate
+             * is ignored for a stamped log: not offered) */
+            hx_error(CMD, "%s: sample rate unknown: every time stamp is the same (all %zu samples at one time): is the "
+                          "time column filled?",
+                     a.pos[0], log.n);
+        } else {
+            hx_error(CMD, "%s: sample rate unknown; give --input-rate", a.pos[0]);
+        }
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }

@@ -434,6 +434,9 @@ expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value i
 { echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
 expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
 expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
+# with the count and the question allan and simgap ask (was the bare phrase; cli_mutation_sweep.py --seed 100, c0078)
+expect_err "same.csv: sample rate unknown: every time stamp is the same (all 300 samples at one time): is the time column filled?" \
+    "stamps that never advance: the samples counted, the time column questioned"
 # the same stamps, then a bad line: the cause is still the rate (not 'the 300 samples before it are fewer than one
 # 64-sample segment', which is false)
 { cat "$T/same.csv"; echo 5,x,1,1,1,1,1; } >"$T/samebad.csv"
