@@ -2521,10 +2521,21 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                  * still is not cut: the detector's held-back samples reach
                  * the alignment, fnav_nav_finish) */
                 const size_t len = strlen(err);
-                snprintf(err + len, err_size - len, ": the stance detector's longest still run lasted %.2f s%s", longest,
-                         longest >= (double)cfg->align.short_still_s
-                             ? ", cut shorter for the alignment (its noise-floor test or a time jump)"
-                             : "");
+                const double dur = traj->n > 1u ? 1e-9 * (double)(traj->f[traj->n - 1u].t_ns - traj->f[0].t_ns) : 0.0;
+                const size_t len2 = len + (size_t)snprintf(err + len, err_size - len,
+                                                           ": the stance detector's longest still run lasted %.2f s%s",
+                                                           longest,
+                                                           longest >= (double)cfg->align.short_still_s
+                                                               ? ", cut shorter for the alignment (its noise-floor test "
+                                                                 "or a time jump)"
+                                                               : "");
+                if (dur < (double)cfg->align.short_still_s && len2 < err_size) {
+                    /* the log itself too short (a header and 2 samples said
+                     * only "the longest still run lasted 0.00 s", as if the
+                     * foot had moved throughout) */
+                    snprintf(err + len2, err_size - len2, ", in a log that lasts only %.3g s (%lu frame%s)", dur,
+                             (unsigned long)traj->n, traj->n == 1u ? "" : "s");
+                }
             }
         }
         /* read to its end: not a run stopped early (returning 1 would make

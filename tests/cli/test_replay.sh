@@ -1178,6 +1178,9 @@ for n in 30 61; do
 done
 expect_exit 1 "0.15 s still: too short to align" "$H" replay "$T/still30.csv" --quiet
 expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s" "the alignment failure says what is required and what was found"
+# ... and that the whole log is shorter than the still period it needs (a header and 2 samples said only "the
+# longest still run lasted 0.00 s", as if the foot had moved throughout; cli_mutation_sweep.py --seed 100, c0131)
+expect_err "longest still run lasted 0.15 s, in a log that lasts only 0.145 s (30 frames)" "0.15 s still: the log's length named"
 # a log read to its end that never aligns did not stop early: the summary
 # must not say "stopped after 4000 samples, at the input error above" and
 # "NOT ALIGNED (the run stopped before a still period long enough was
