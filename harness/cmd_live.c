@@ -1378,7 +1378,13 @@ int hx_cmd_live(int argc, char **argv)
         }
         if (L.csv_failed && out_path != NULL) {
             char note[128];
-            hx_error(CMD, "cannot write %s%s", out_path, hx_errno_note(csv_errno, note, sizeof note));
+            /* --out -: said as replay says it, not "cannot write - (Broken pipe)" */
+            if (strcmp(out_path, "-") == 0) {
+                hx_error(CMD, "cannot write the trajectory to standard output%s",
+                         hx_errno_note(csv_errno, note, sizeof note));
+            } else {
+                hx_error(CMD, "cannot write %s%s", out_path, hx_errno_note(csv_errno, note, sizeof note));
+            }
         }
     }
     if (L.plot_pid > 0) {
