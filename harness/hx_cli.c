@@ -271,9 +271,20 @@ static int arg_real(const hx_args_t *a, const char *name, double lo, double hi, 
     if (s == NULL) {
         return 0;
     }
-    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || (whole && v != floor(v))) {
-        hx_error(a->spec->name, "%s '%s' is not a %snumber in [%.10g, %.10g]", name, s, whole ? "whole " : "", lo,
-                 hi);
+    /* the three faults said apart: "--hangup-after '0' is not a whole
+     * number in [1, ...]" read as if 0 were not a whole number */
+    if (hx_parse_number(s, &v) != 0) {
+        hx_error(a->spec->name, "%s '%s' is not a number (give a %snumber in [%.10g, %.10g])", name, s,
+                 whole ? "whole " : "", lo, hi);
+        return -1;
+    }
+    if (whole && v != floor(v)) {
+        hx_error(a->spec->name, "%s '%s' is not a whole number (give one in [%.10g, %.10g])", name, s, lo, hi);
+        return -1;
+    }
+    if (v < lo || v > hi) {
+        hx_error(a->spec->name, "%s '%s' is out of range (give a %snumber in [%.10g, %.10g])", name, s,
+                 whole ? "whole " : "", lo, hi);
         return -1;
     }
     *out = v;

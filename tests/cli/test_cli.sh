@@ -109,7 +109,7 @@ for v in 0x10 " 50" "	50" nan inf 1e999 5x "" -5 0; do
     expect_err "--rate" "convert --rate '$v': the error names the option"
 done
 expect_exit 2 "psd --nfft ' 64' refused" "$H" psd vectors/walk.bin --nfft " 64" --json "$T/p.json"
-expect_err "--nfft ' 64' is not a whole number" "psd --nfft ' 64': the error names the option"
+expect_err "--nfft ' 64' is not a number (give a whole number in \[8, 4096\])" "psd --nfft ' 64': the error names the option"
 expect_exit 2 "psd --nfft 99999999999999999999 refused" "$H" psd vectors/walk.bin --nfft 99999999999999999999
 expect_exit 2 "sim --duration 0x2 refused" "$H" sim --out "$S" --duration 0x2
 expect_err "--duration '0x2' is not a number" "sim --duration 0x2: the error names the option"
@@ -157,9 +157,15 @@ same_as "sim --ring-scale -0" "$S" "$T/r_plain.bin" "$T/r_none.bin"
 # --- a range in an error is printed exactly: "--seed '4294967296' is not a
 # number in [0, 4.29497e+09]" read as if the value were inside it
 expect_exit 2 "sim --seed 4294967296 refused" "$H" sim --out "$T/s.bin" --seed 4294967296
-expect_err "--seed '4294967296' is not a [a-z ]*number in \[0, 4294967295\]" "the --seed range is printed exactly"
+expect_err "--seed '4294967296' is out of range (give a [a-z ]*number in \[0, 4294967295\])" "the --seed range is printed exactly"
 expect_exit 2 "live --timeout 0.01 refused" "$H" live /dev/null --timeout 0.01
-expect_err "--timeout '0.01' is not a number in \[0.1, 1000000\]" "the --timeout range is printed exactly"
+expect_err "--timeout '0.01' is out of range (give a number in \[0.1, 1000000\])" "the --timeout range is printed exactly"
+# 0 is a whole number: "--hangup-after '0' is not a whole number in [1, ...]"
+# read as if it were not; each fault is said as what it is
+expect_exit 2 "stream --hangup-after 0 refused" "$H" stream vectors/walk.bin "$T/no_port" --hangup-after 0
+expect_err "--hangup-after '0' is out of range (give a whole number in \[1, 2000000000\])" "a whole number out of range is said to be out of range"
+expect_exit 2 "stream --hangup-after abc refused" "$H" stream vectors/walk.bin "$T/no_port" --hangup-after abc
+expect_err "--hangup-after 'abc' is not a number (give a whole number in \[1, 2000000000\])" "text is said to be no number"
 
 # --- a missing positional argument is named ("missing argument" alone left
 # the reader to count them against the usage)
@@ -306,7 +312,7 @@ expect_out "130 (143, 129) interrupted by Ctrl-C (SIGTERM, SIGHUP)" "stream --he
 # and montecarlo refused the same values
 printf '1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n' > "$T/ten.txt"
 expect_exit 2 "allan --seed 1.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --seed 1.5
-expect_err "--seed '1.5' is not a whole number in \[0, 4294967295\]" "allan --seed 1.5: the error names the option"
+expect_err "--seed '1.5' is not a whole number (give one in \[0, 4294967295\])" "allan --seed 1.5: the error names the option"
 expect_exit 2 "allan --sim-samples 100.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --sim-samples 100.5
 expect_err "--sim-samples '100.5' is not a whole number" "allan --sim-samples 100.5: the error names the option"
 expect_exit 2 "sim --seed 1.5 refused" "$H" sim --out "$T/s.bin" --duration 1 --seed 1.5
@@ -324,7 +330,7 @@ expect_exit 0 "psd --nfft 1.28e2 --overlap 6.4e1 (whole numbers)" "$H" psd vecto
 cmp -s "$T/pe.csv" "$T/pd.csv" && pass "psd --nfft 1.28e2 --overlap 6.4e1: the spectrum of --nfft 128 --overlap 64" \
     || fail "psd --nfft 1.28e2 differs from --nfft 128"
 expect_exit 2 "psd --nfft 128.5 refused" "$H" psd vectors/walk.bin --nfft 128.5
-expect_err "^harness psd: error: --nfft '128.5' is not a whole number in \[8, 4096\]$" "psd --nfft 128.5: a whole number's words and range"
+expect_err "^harness psd: error: --nfft '128.5' is not a whole number (give one in \[8, 4096\])$" "psd --nfft 128.5: a whole number's words and range"
 
 # --- a JSON file is UTF-8 text (RFC 8259) whatever the bytes of a file name
 # in it: a Latin-1 byte (0xe9) is the replacement character U+FFFD, a

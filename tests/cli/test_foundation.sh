@@ -668,7 +668,7 @@ if HARNESS="$H" /usr/bin/python3 "$(dirname "$0")/../../scripts/resample_check.p
     vectors/walk.bin 50 vectors/walk.bin 100 >"$T/rchk" 2>&1; then pass "convert --rate matches scipy's low-pass"
 else fail "convert --rate differs from scipy's low-pass: $(cat "$T/rchk")"; fi
 expect_exit 2 "convert --rate 0" "$H" convert vectors/walk.bin "$T/r0.csv" --rate 0
-expect_err "is not a number in \[1, 100000\]" "bad --rate said, with replay's range"
+expect_err "--rate '0' is out of range (give a number in \[1, 100000\])" "bad --rate said, with replay's range"
 # a rate far below 1 Hz made a filter longer than an int (one NaN row, exit 0)
 expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv" --rate 1e-9
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi

@@ -69,7 +69,7 @@ expect_exit 0 "3 s at 100 Hz: not too short" "$H" simgap "$T/s3.csv" --quiet --s
 # a whole number" (not [0, 2e9], "not an integer"):
 # every seed simgap derives is uint32_t arithmetic, which wraps, defined
 expect_exit 2 "--seed past 2^32 - 1" "$H" simgap "$T/s3.csv" --seed 4294967296
-expect_err "^harness simgap: error: --seed '4294967296' is not a whole number in \[0, 4294967295\]$" "--seed: sim's range and words"
+expect_err "^harness simgap: error: --seed '4294967296' is out of range (give a whole number in \[0, 4294967295\])$" "--seed: sim's range and words"
 expect_exit 0 "--seed 4294967295, the last seed (its twins' seeds wrap)" "$H" simgap "$T/s3.csv" --quiet --seeds 4 --seed 4294967295 --json "$T/s3seed.json"
 json "$T/s3seed.json" "j['settings']['seed'] == 4294967295" &&
     pass "--seed 4294967295 written in the JSON" || fail "--seed in the JSON: $(grep -o '"seed":[^,]*' "$T/s3seed.json" | head -2)"

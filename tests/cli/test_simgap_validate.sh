@@ -39,7 +39,7 @@ expect_err "^harness simgap-validate: error: --json $T/same.json and --markdown 
 # --seed: sim's range and words (not [0, 2e9], "not an integer"); the case
 # generator's seed is a uint32_t
 expect_exit 2 "--seed past 2^32 - 1" "$H" simgap-validate --cases 1 $FAST --seed 4294967296
-expect_err "^harness simgap-validate: error: --seed '4294967296' is not a whole number in \[0, 4294967295\]$" "--seed: sim's range and words"
+expect_err "^harness simgap-validate: error: --seed '4294967296' is out of range (give a whole number in \[0, 4294967295\])$" "--seed: sim's range and words"
 expect_exit 0 "--seed 4294967295, the last seed" "$H" simgap-validate --cases 1 $FAST --quiet --seed 4294967295 --json "$T/vseed.json"
 json "$T/vseed.json" "j['seed'] == 4294967295" && pass "--seed 4294967295 written in the JSON" || fail "--seed in the JSON"
 
