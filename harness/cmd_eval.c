@@ -700,6 +700,8 @@ typedef struct {
     long idx[GCP_MAX];
     double x[GCP_MAX], y[GCP_MAX];
     int bad; /* rows that are not strideIndex, _, x, y with finite numbers */
+    long bad_line; /* the first such row's line number (1 = the file's first line) */
+    char bad_text[160]; /* and its text, printable (hx_line_str), cut (a row is about 100 characters) */
     int cut; /* a last line without its newline (cut off), not read */
 } gcp_t;
 
@@ -750,6 +752,8 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
     char line[512];
     long row = 0;
     g->n = g->bad = g->cut = 0;
+    g->bad_line = 0;
+    g->bad_text[0] = '\0';
     if (f == NULL) {
         snprintf(why, why_size, "no truth file %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
         return -1;
@@ -778,8 +782,13 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
             break;
         }
         if (!ok) {
-            g->bad += line[k] != '\0'; /* blank lines are no rows */
-            continue;
+            if (line[k] != '\0' && g->bad++ == 0) {
+                /* the first one's line and text, for the warning below */
+                line[strcspn(line, "\r\n")] = '\0';
+                g->bad_line = row;
+                (void)hx_line_str(g->bad_text, sizeof g->bad_text, line);
+            }
+            continue; /* blank lines are no rows */
         }
         if (g->n == GCP_MAX) {
             fclose(f);
@@ -792,6 +801,15 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
         g->n++;
     }
     fclose(f);
+    if (g->bad > 0) {
+        /* said on standard error as well as in the walk's row (a user of
+         * eval reads its warnings, not each row's note); printed once in
+         * eval's once-per-process mode, however many runs read the file */
+        hx_warn("eval",
+                "%s:%ld: %d unreadable truth row%s ignored (the first here: '%s'): a row is strideIndex, _, x, y, "
+                "four finite numbers with x and y within 1e6 m; the strides of those rows are not scored",
+                path, g->bad_line, g->bad, g->bad == 1 ? "" : "s", g->bad_text);
+    }
     if (g->n < 2) {
         snprintf(why, why_size, "truth file has %d readable stride rows (strideIndex, _, x, y), 2 needed", g->n);
         return -1;

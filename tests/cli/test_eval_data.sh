@@ -485,6 +485,10 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
+    # ... and warned about on standard error (only the row's note said so: exit 0, nothing on stderr), naming
+    # the truth file, the count, and the first one's line and text (exit 0 still: the walk is scored on the rest)
+    expect_err "^harness eval: warning: $J/junk_strides_gcp.csv:4: 5 unreadable truth rows ignored (the first here: '8\.95.*e-01\"x\"'): a row is strideIndex, _, x, y" \
+        "unreadable truth rows are warned about, the first one's line and text named"
     # a NUL byte inside a row is no long line: the row after it must not be
     # taken for the rest of a long one and lost without a word (as a long
     # line told by a missing newline, which a NUL also gives, would be)
