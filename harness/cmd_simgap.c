@@ -226,14 +226,19 @@ int hx_cmd_simgap(int argc, char **argv)
         status = HX_EXIT_IO;
     }
     /* exit 1 says why in one error line (the summary, JSON and plots are
-     * written): the input's error (FILE:LINE or record), else why the log
-     * is too short for a confident answer */
+     * written): an incomplete input (its error, FILE:LINE or record, was
+     * warned when it was read, hx_load_input(): the log named, not the
+     * line again, as info's and psd's closing error), else why the log is
+     * too short for a confident answer */
     if (lr == 1) {
         if (!r->confident) {
-            hx_error("simgap", "%s (the %zu sample%s before it %s too short for a confident answer: %s)", log.error,
-                     log.n, log.n == 1 ? "" : "s", log.n == 1 ? "is" : "are", r->why);
+            hx_error("simgap",
+                     "%s: incomplete input (warned above): the %zu sample%s before the error %s too short for a "
+                     "confident answer: %s",
+                     path, log.n, log.n == 1 ? "" : "s", log.n == 1 ? "is" : "are", r->why);
         } else {
-            hx_error("simgap", "%s (diagnosed on the %zu sample%s before it)", log.error, log.n, log.n == 1 ? "" : "s");
+            hx_error("simgap", "%s: incomplete input (warned above): the results cover the %zu sample%s before the error",
+                     path, log.n, log.n == 1 ? "" : "s");
         }
     } else if (!r->confident) {
         hx_error("simgap", "%s: too short for a confident answer: %s", path, r->why);

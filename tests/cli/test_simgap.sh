@@ -249,11 +249,18 @@ expect_exit 1 "noise-free walk with --plot" "$H" simgap "$T/nf.csv" --quiet --se
 [ ! -e "$T/nfplot" ] && pass "noise-free walk: no --plot directory left" || fail "noise-free walk: $T/nfplot left made"
 
 # incomplete input: the diagnosis runs on the samples before the error, and
-# exit 1 comes with one error line naming the file and line (or record)
+# exit 1 comes with the line (or record) warned once, naming the file and
+# line, and a closing error of the samples used, as info's and psd's (the
+# bad line was said twice, "(using the N samples before it)" as a warning
+# and again as the error, "(diagnosed on the N samples before it)")
 "$H" sim --motion stand:4 --rate 100 --profile mtx --seed 2 --out "$T/tx.csv" >/dev/null 2>&1 || fail "sim text"
 { head -n 301 "$T/tx.csv"; echo abc; } > "$T/tx2.csv"
 expect_exit 1 "CSV with text at line 302" "$H" simgap "$T/tx2.csv" --quiet --seeds 4 --json "$T/tx2.json"
-expect_err "^harness simgap: error: .*tx2.csv:302: " "text in the CSV: error line with FILE:LINE"
+expect_err "^harness simgap: warning: .*tx2.csv:302: .*(using the 300 samples before it)$" "text in the CSV: warned with FILE:LINE"
+expect_err "^harness simgap: error: .*tx2.csv: incomplete input (warned above): the .*300 samples before the error" \
+    "text in the CSV: a closing error of the samples used"
+n=$(grep -c "tx2.csv:302" "$T/err")
+[ "$n" -eq 1 ] && pass "text in the CSV: the bad line said once" || fail "text in the CSV: the bad line said $n times"
 [ -s "$T/tx2.json" ] && pass "text in the CSV: JSON still written" || fail "text in the CSV: no JSON"
 # the JSON says the input stopped early, as replay's, info's and psd's do
 # (without a key for it a log cut at a bad line reads as a whole one)
@@ -261,7 +268,8 @@ json "$T/tx2.json" 'j["complete"] is False and "tx2.csv:302" in j["error"] and j
     pass "text in the CSV: JSON complete false, error names FILE:LINE" || fail "text in the CSV: JSON complete/error: $(cat "$T/pyerr")"
 head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
 expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 4
-expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
+expect_err "^harness simgap: warning: .*trunc.bin: truncated" "truncated .bin: warned"
+expect_err "^harness simgap: error: .*trunc.bin: incomplete input (warned above)" "truncated .bin: error line"
 
 # a static log above 1 kHz whose AR(1) time is near the catalogue's 1 ms:
 # were the baseline fit's time grid to begin at one sample (0.25 ms), the
