@@ -702,6 +702,7 @@ typedef struct {
     int bad; /* rows that are not strideIndex, _, x, y with finite numbers */
     long bad_line; /* the first such row's line number (1 = the file's first line) */
     char bad_text[160]; /* and its text, printable (hx_line_str), cut (a row is about 100 characters) */
+    long idx_lo, idx_hi; /* the lowest and highest stride index read, as in the file (before any resampling) */
     int cut; /* a last line without its newline (cut off), not read */
 } gcp_t;
 
@@ -752,6 +753,7 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
     char line[512];
     long row = 0;
     g->n = g->bad = g->cut = 0;
+    g->idx_lo = g->idx_hi = 0;
     g->bad_line = 0;
     g->bad_text[0] = '\0';
     if (f == NULL) {
@@ -796,6 +798,12 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
             return -1;
         }
         g->idx[g->n] = (long)llround(v[0]);
+        if (g->n == 0 || g->idx[g->n] < g->idx_lo) {
+            g->idx_lo = g->idx[g->n];
+        }
+        if (g->n == 0 || g->idx[g->n] > g->idx_hi) {
+            g->idx_hi = g->idx[g->n];
+        }
         g->x[g->n] = v[2];
         g->y[g->n] = v[3];
         g->n++;
@@ -919,10 +927,32 @@ typedef struct {
     int n, files; /* walks with a result, IMU files found */
 } fp_t;
 
-/* stride_errors' failure as a reason */
-static void no_strides(ev_t *ev, const char *path, char *why, size_t why_size)
+/* stride_errors' failure as a reason, with the spans that tell why: the
+ * log's replayed and its truth's strides (in the file's sample indices and
+ * in s at the log's rate, the same in a resampled run, whose repeat of the
+ * warning is then not printed again), and how many strides lie inside with
+ * a position, the first (the reference) among them or not. The bare phrase
+ * gave no number to check a truth of another walk or a log cut short by. */
+static void no_strides(ev_t *ev, const char *path, const hx_traj_t *t, const gcp_t *g, char *why, size_t why_size)
 {
-    fail(ev, path, why, why_size, "fewer than 2 truth strides with a position fall inside the replayed samples");
+    char msg[HX_ERR_SIZE];
+    const double rate = t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz; /* the log's own */
+    const double span_s = t->n > 1 ? 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns) : 0.0;
+    int i, in = 0, first_in = 0;
+    for (i = 0; i < g->n; i++) {
+        if (g->idx[i] >= 0 && (size_t)g->idx[i] < t->n && isfinite(g->x[i]) && isfinite(g->y[i])) {
+            in++;
+            first_in |= i == 0;
+        }
+    }
+    snprintf(msg, sizeof msg,
+             "fewer than 2 truth strides with a position fall inside the replayed samples: the log replayed spans "
+             "%.1f s, its truth's %d strides samples %ld to %ld (%.1f to %.1f s at the log's %.4g Hz), %d of them "
+             "inside it with a position, the first (the reference) %s: is the truth file another walk's, or the log "
+             "cut short?",
+             span_s, g->n, g->idx_lo, g->idx_hi, rate > 0.0 ? (double)g->idx_lo / rate : 0.0,
+             rate > 0.0 ? (double)g->idx_hi / rate : 0.0, rate, in, first_in ? "among them" : "not among them");
+    fail(ev, path, why, why_size, msg);
 }
 
 /* The strides a walk's figures leave out, and the truth rows not read, in
@@ -1020,7 +1050,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
-            no_strides(ev, path, note, sizeof note);
+            no_strides(ev, path, &t, &g, note, sizeof note);
             not_run_row(ev, write, cell, 6, note);
         } else if (!(r.path > 0.0)) {
             /* the truth's scored strides all at the first one's position:
@@ -1186,7 +1216,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
-            no_strides(ev, path, note, sizeof note);
+            no_strides(ev, path, &t, &g, note, sizeof note);
             not_run_row(ev, write, cell, 4, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);

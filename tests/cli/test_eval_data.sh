@@ -159,10 +159,11 @@ tb_row "1,025 strides" "^| many | - |.*| not run: truth file has more than 1024 
 tb_row "vicon: one readable stride row" \
     "^| one | - | - | - | - | not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
 tb_row "every motion-capture position beyond 1e6 m" "^| far | - |.*| not run: no motion-capture position columns |$"
-tb_row "footprint truth past the log's end" \
-    "^| out | - | - | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
-tb_row "vicon truth past the log's end" \
-    "^| out | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
+# ... with the spans to check it by: the log's, the truth strides' (samples and s), how many lie inside (the
+# bare phrase gave no number)
+outw="fewer than 2 truth strides with a position fall inside the replayed samples: the log replayed spans [0-9.]* s, its truth's 2 strides samples 100000 to 100100 (1000\.0 to 1001\.0 s at the log's 100 Hz), 0 of them inside it with a position, the first (the reference) not among them: is the truth file another walk's, or the log cut short?"
+tb_row "footprint truth past the log's end" "^| out | - | - | - | - | - | - | not run: $outw |$"
+tb_row "vicon truth past the log's end" "^| out | - | - | - | - | not run: $outw |$"
 for f in left right; do
     tb_row "events without TrialBoundaries ($f)" "^| 1-1 | $f | - |.*| not run: the events file has no TrialBoundaries pair |$"
     tb_row "events without LeftFootEvents ($f)" "^| 1-2 | $f | - |.*| not run: the events file has no LeftFootEvents |$"
@@ -179,6 +180,7 @@ expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable
 expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
 expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride rows" "vicon: the refusal names the truth file"
 expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no position: the IMU log that holds them named"
+expect_err "own_3dmgx5_footprints/out_imu.csv: $outw\$" "a truth past the log's end: warned with the spans"
 # a recording's events file serves both feet: its TrialBoundaries error was warned once per foot, now once per
 # recording (each foot keeps its row and its failed run, above)
 n=$(grep -c "1-1.json: the events file has no TrialBoundaries pair" "$T/err")
