@@ -1507,7 +1507,7 @@ sys.exit(1 if bad else 0)' "$T" >"$T/rfcov.txt" 2>&1 && pass "--refits against 8
 expect_exit 2 "--refits 1" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --refits 1
 expect_err "--refits must be 0 (off) or at least 2, not '1'" "--refits 1: the error says why"
 expect_exit 2 "--refits abc" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --refits abc
-expect_err "--refits 'abc' is not a whole number" "--refits abc: the error names it"
+expect_err "--refits 'abc' is not a number (give a whole number in" "--refits abc: the error names it"
 expect_exit 0 "no --refits" "$H" allan --series "$T/ar0.txt" --rate 10 --no-sim --json "$T/rfdef.json"
 mv "$T/out" "$T/rfdef.out"
 grep -q "refits" "$T/rfdef.out" && fail "no --refits: a refits block printed" || pass "no --refits: no refits block"
