@@ -704,6 +704,8 @@ typedef struct {
     char bad_text[160]; /* and its text, printable (hx_line_str), cut (a row is about 100 characters) */
     long idx_lo, idx_hi; /* the lowest and highest stride index read, as in the file (before any resampling) */
     int cut; /* a last line without its newline (cut off), not read */
+    long cut_line; /* its line number */
+    char cut_text[160]; /* and its text, printable (hx_line_str), cut */
 } gcp_t;
 
 /* The n numbers of a truth row, separated by commas, blanks around them
@@ -754,8 +756,8 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
     long row = 0;
     g->n = g->bad = g->cut = 0;
     g->idx_lo = g->idx_hi = 0;
-    g->bad_line = 0;
-    g->bad_text[0] = '\0';
+    g->bad_line = g->cut_line = 0;
+    g->bad_text[0] = g->cut_text[0] = '\0';
     if (f == NULL) {
         snprintf(why, why_size, "no truth file %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
         return -1;
@@ -781,6 +783,12 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
              * the cut may have shortened the y it ends in (-0.5529 read as
              * -5.529): not read, as the log reader's last line */
             g->cut = line[k] != '\0';
+            if (g->cut) {
+                /* its line and text, for the warning below */
+                line[strcspn(line, "\r")] = '\0';
+                g->cut_line = row;
+                (void)hx_line_str(g->cut_text, sizeof g->cut_text, line);
+            }
             break;
         }
         if (!ok) {
@@ -817,6 +825,14 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
                 "%s:%ld: %d unreadable truth row%s ignored (the first here: '%s'): a row is strideIndex, _, x, y, "
                 "four finite numbers with x and y within 1e6 m; the strides of those rows are not scored",
                 path, g->bad_line, g->bad, g->bad == 1 ? "" : "s", g->bad_text);
+    }
+    if (g->cut) {
+        /* the same for the cut last line (only the walk's note said so),
+         * once per file as above */
+        hx_warn("eval",
+                "%s:%ld: truth's last line cut off (no newline): not read ('%s': the cut may have shortened "
+                "the y it ends in); the stride of that row is not scored",
+                path, g->cut_line, g->cut_text);
     }
     if (g->n < 2) {
         snprintf(why, why_size, "truth file has %d readable stride rows (strideIndex, _, x, y), 2 needed", g->n);

@@ -456,6 +456,12 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth files cut, without header, motion capture lost" "$H" eval --no-experiments --data "$T/truth" --out "$T/truth.md"
     if grep -q "^| cut | $((n - 1)) | .*| truth's last line cut off (no newline): not read |" "$T/truth.md"; then
         pass "a truth file cut off mid-line: its last row not read, and noted"; else fail "cut truth: $(grep '^| cut' "$T/truth.md")"; fi
+    # ... and warned about on standard error, once, naming the file, the line and its text (only the row's
+    # note said so: exit 0, nothing on stderr); exit 0 still (the walk is scored on the other rows)
+    expect_err "^harness eval: warning: $P/cut_strides_gcp.csv:$((n + 2)): truth's last line cut off (no newline): not read ('[0-9.e+]*,.*,-5\.529': " \
+        "a truth file's cut last line is warned about, its line and text named"
+    if [ "$(grep -c "cut off (no newline)" "$T/err")" -eq 1 ]; then pass "the cut truth line warned once"; else
+        fail "cut truth warnings: $(grep "cut off (no newline)" "$T/err")"; fi
     if grep -q "^| nohead | $n | " "$T/truth.md"; then pass "a truth file without a header keeps its first stride"; else
         fail "headerless truth: $(grep '^| nohead' "$T/truth.md")"; fi
     # a truth that stops half way (complete lines): the unscored end is noted
