@@ -704,6 +704,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     int64_t t_prev = 0, t_first = 0; /* the last and the first sample's stamps */
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
     long irregular = 0, gaps = 0, repeats = 0; /* repeats: intervals of 0, a time stamp written twice */
+    size_t checked = 0; /* the intervals checked (against stamp_rate) */
     long run = 0; /* the intervals of 0 right before this one: samples that share a stamp */
     double missing = 0.0, longest_gap_s = 0.0; /* samples the gaps lost (round(dt / T) - 1 each), the longest gap */
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
@@ -763,6 +764,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * missing as samples shared the stamp before */
             const double lost = hx_interval_missing(s.t_ns - t_prev, stamp_rate, res_ns) - (double)run;
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
+            checked++;
             repeats += s.t_ns == t_prev;
             if (lost > 0.0) {
                 const double dt_s = (double)(s.t_ns - t_prev) * 1e-9;
@@ -820,11 +822,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         /* the gaps said with what they lost: the series is read as if its
          * samples were consecutive (a 60 s hole in an hour was only "3
          * intervals differ"); a stamp written twice said as such */
-        char what[300];
+        char head[96], what[300];
+        /* of how many, and the period they were checked against, as psd's
+         * ("N intervals differ from 1/rate" named neither) */
+        hx_irregular_head(head, sizeof head, irregular, checked, stamp_rate);
         hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)R->n);
-        hx_warn(CMD, "%s: %ld interval%s from 1/rate by more than 10 %%%s: the Allan variance assumes uniform "
-                     "sampling%s",
-                path, irregular, irregular == 1 ? " differs" : "s differ", what, hx_gaps_joined(gaps));
+        hx_warn(CMD, "%s: %s%s: the Allan variance assumes uniform sampling%s", path, head, what,
+                hx_gaps_joined(gaps));
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
         /* not with --rate, which sets the rate the analysis takes; the

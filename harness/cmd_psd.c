@@ -914,11 +914,10 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         if (irregular > 0) {
-            char what[300];
+            char head[96], what[300];
+            hx_irregular_head(head, sizeof head, irregular, log.n - 1, rate);
             hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)log.n);
-            hx_warn(CMD, "%s: %ld of %zu intervals %s from 1/%.4g s by more than 10 %%%s: Welch assumes uniform "
-                         "sampling%s",
-                    a.pos[0], irregular, log.n - 1, irregular == 1 ? "differs" : "differ", rate, what, hx_gaps_joined(gaps));
+            hx_warn(CMD, "%s: %s%s: Welch assumes uniform sampling%s", a.pos[0], head, what, hx_gaps_joined(gaps));
         }
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,

@@ -5486,6 +5486,12 @@ hx_format_t hx_detect_file(const char *path)
     return got > 0 ? detect(head, (size_t)got) : HX_FMT_AUTO;
 }
 
+void hx_irregular_head(char *buf, size_t size, long irregular, size_t total, double rate_hz)
+{
+    snprintf(buf, size, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%", irregular, total,
+             irregular == 1 ? "differs" : "differ", rate_hz);
+}
+
 void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
                        double missing, double n)
 {

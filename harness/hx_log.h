@@ -325,6 +325,11 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
  *  repeated)" or "". n the samples read. */
 void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
                        double missing, double n);
+/** The head of allan's and psd's warning of irregular intervals, one form
+ *  for both: "N of M intervals differ from 1/R s by more than 10 %" ("1 of
+ *  M intervals differs"), M the intervals checked, R the rate in Hz they
+ *  were checked against (%.4g), into buf; hx_irregular_text follows it. */
+void hx_irregular_head(char *buf, size_t size, long irregular, size_t total, double rate_hz);
 /** ", and the samples are joined across the gap(s) as if consecutive"
  *  for gaps > 0, else "". */
 const char *hx_gaps_joined(long gaps);

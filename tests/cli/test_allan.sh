@@ -853,15 +853,16 @@ if grep -q "intervals differ" "$T/err"; then fail "millisecond stamps of uniform
     pass "millisecond stamps of uniform samples: no irregular-sampling warning"; fi
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
-expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
-expect_err "msgap.csv: 30 intervals differ from 1/rate by more than 10 %, 30 of them gaps (longest 0.00[0-9]* s; about 30 samples missing in all, 1 % of the log).*joined across the gaps" \
+# the total and the period checked against named, as psd's (it was "30 intervals differ from 1/rate", neither)
+expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
+expect_err "msgap.csv: 30 of 2969 intervals differ from 1/398\.2 s by more than 10 %, 30 of them gaps (longest 0.00[0-9]* s; about 30 samples missing in all, 1 % of the log).*joined across the gaps" \
     "the gaps named with the file, the longest and the samples they lost"
 # 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
 # lost: each 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, and the log must not be called uniform
 # (no warning); so a 30-minute ADIS16405 cut with four gaps does not say "1 intervals differ"
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/cs.csv"
 expect_exit 0 "allan on 10 ms stamps at 100 Hz with lost samples" "$H" allan "$T/cs.csv" --no-sim --quiet
-expect_err "30 intervals differ" "single lost samples under stamps of one period's resolution are counted"
+expect_err "30 of 2969 intervals differ from 1/100 s" "single lost samples under stamps of one period's resolution are counted"
 # white noise of 1e-22 (a series in a tiny unit): its Allan variances (1e-44) lie below the float build's
 # normal range, and were printed with lost digits (4.6 % off at m = 2 against the same series x 1e22), or, at
 # 1e-26 in the streaming core, underflowed to 0 and were called a constant channel; now an error, exit 1.
@@ -1040,7 +1041,7 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 expect_exit 0 "a static log stamped in bursts, read as us" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
-# ... but tau read at 200 kHz is not left with only "intervals differ from 1/rate"; a warning names the rate over the
+# ... but tau read at 200 kHz is not left with only "N of M intervals differ from 1/R s"; a warning names the rate over the
 # span and --input-rate (exit 0 still)
 expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; tau, sigma_v and the profile are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
     "allan: stamps in bursts warned, the stamps' rate said, 100 Hz and --input-rate named"
@@ -1434,21 +1435,21 @@ json "$T/sim.json" '(j["complete"] is False and "SIGTERM in the simulation check
     fail "SIGTERM in the simulation: the JSON: $(head -c 600 "$T/sim.json")"
 
 # a time stamp written twice (0, 10, 10, 30 ms) was "1 of them gaps (...; about 1 samples missing ...)": a repeated
-# stamp is no sample lost; one interval "1 interval differs", a gap "(a gap of ...)" (", 1 of them a gap (longest
+# stamp is no sample lost; one interval "1 of M intervals differs", a gap "(a gap of ...)" (", 1 of them a gap (longest
 # ...)" before, a CLI mutation sweep's find); --help says --json - works
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) { t = i / 100; if (i == 1001) t = 10.00
     printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", t, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50,
         (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 } }' >"$T/rep.csv"
 expect_exit 0 "a time stamp written twice" "$H" allan "$T/rep.csv" --no-sim --quiet
-expect_err "rep.csv: 2 intervals differ from 1/rate by more than 10 %, 1 of them a time stamp repeated: the Allan" \
+expect_err "rep.csv: 2 of 2999 intervals differ from 1/100 s by more than 10 %, 1 of them a time stamp repeated: the Allan" \
     "a repeated stamp: said as such, no sample missing"
 awk -F, 'NR != 1003' "$T/rep.csv" >"$T/one_gap.csv"
 expect_exit 0 "one lost sample" "$H" allan "$T/one_gap.csv" --no-sim --quiet
-expect_err "one_gap.csv: 1 interval differs from 1/rate by more than 10 % (a gap of 0.02 s; about 1 sample missing, 0.033 % of the log): the Allan" \
+expect_err "one_gap.csv: 1 of 2998 intervals differs from 1/100 s by more than 10 % (a gap of 0.02 s; about 1 sample missing, 0.033 % of the log): the Allan" \
     "one lost sample: singular"
 awk -F, 'NR == 1003 { $1 = "10.01" } NR == 1002 { print } { print }' OFS=, "$T/rep.csv" >"$T/one_rep.csv"
 expect_exit 0 "one row written twice" "$H" allan "$T/one_rep.csv" --no-sim --quiet
-expect_err "one_rep.csv: 1 interval differs from 1/rate by more than 10 % (a time stamp repeated): the Allan" \
+expect_err "one_rep.csv: 1 of 3000 intervals differs from 1/100 s by more than 10 % (a time stamp repeated): the Allan" \
     "one row written twice: singular"
 "$H" allan --help >"$T/out" 2>&1
 expect_out "--json FILE .*'-': standard output" "allan --help: --json - said"
