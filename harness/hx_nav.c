@@ -548,12 +548,13 @@ int hx_nav_resample_progress(const hx_log_t *in, double rate_hz, double max_gap_
         free(keep);
         if (rate_hz >= fs) {
             snprintf(err, err_size, "--rate %g Hz is not below the input rate %.3f Hz (1 / its median interval; only "
-                                    "downsampling): leave --rate out, or give a rate below %.3f Hz",
+                                    "downsampling): leave --rate out, or give a rate below %.3f Hz (0.999 x the "
+                                    "input rate, rounded down)",
                      rate_hz, fs, below);
         } else {
             snprintf(err, err_size, "--rate %g Hz is within 0.1 %% of the input rate %.3f Hz (1 / its median interval): "
                                     "nothing to decimate (only downsampling); leave --rate out, or give a rate below "
-                                    "%.3f Hz",
+                                    "%.3f Hz (0.999 x the input rate, rounded down)",
                      rate_hz, fs, below);
         }
         return -1;

@@ -377,7 +377,7 @@ if grep -q "sample rate looks wrong" "$T/err"; then fail "40 steps/min, min_zupt
 else pass "40 steps/min, min_zupt_cycle=0: no rate warning"; fi
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
 expect_err "only downsampling" "rate error explains"
-expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): leave --rate out, or give a rate below 397.920 Hz" "the input rate in the error is named the median's, with what to do"
+expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): leave --rate out, or give a rate below 397.920 Hz (0.999 x the input rate, rounded down)$" "the input rate in the error is named the median's, with what to do and the bound's reason"
 # a 200 Hz log on a clock 0.04 % fast (200.080 Hz, as the vicon trials'):
 # --rate 200 is below its rate but within the 0.1 % margin, and the error
 # must not say "--rate 200 Hz is not below the input rate 200.1 Hz"
@@ -385,10 +385,10 @@ expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): 
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.6f", $1 * 0.9996); print }' OFS=, "$T/s200.csv" > "$T/s200f.csv"
 for r in 200 199.9; do
     expect_exit 1 "--rate $r on a 200.080 Hz log" "$H" replay "$T/s200f.csv" --rate "$r" --quiet
-    expect_err "^harness replay: error: --rate $r Hz is within 0.1 % of the input rate 200.080 Hz (1 / its median interval): nothing to decimate (only downsampling); leave --rate out, or give a rate below 199.879 Hz$" "--rate $r: within 0.1 %, said with the bound"
+    expect_err "^harness replay: error: --rate $r Hz is within 0.1 % of the input rate 200.080 Hz (1 / its median interval): nothing to decimate (only downsampling); leave --rate out, or give a rate below 199.879 Hz (0.999 x the input rate, rounded down)$" "--rate $r: within 0.1 %, said with the bound"
 done
 expect_exit 1 "convert --rate 200 on a 200.080 Hz log" "$H" convert "$T/s200f.csv" "$T/s200c.csv" --rate 200
-expect_err "--rate 200 Hz is within 0.1 % of the input rate 200.080 Hz (1 / its median interval): nothing to decimate (only downsampling); leave --rate out, or give a rate below 199.879 Hz$" "convert --rate says the same"
+expect_err "--rate 200 Hz is within 0.1 % of the input rate 200.080 Hz (1 / its median interval): nothing to decimate (only downsampling); leave --rate out, or give a rate below 199.879 Hz (0.999 x the input rate, rounded down)$" "convert --rate says the same"
 expect_exit 0 "--rate at the advised bound" "$H" replay "$T/s200f.csv" --rate 199.879 --quiet
 if [ -n "$D" ] && [ -f "$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_imu.csv" ]; then
     expect_exit 1 "--rate 200 on a vicon trial" "$H" replay "$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_imu.csv" --rate 200 --quiet
