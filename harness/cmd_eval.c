@@ -2823,6 +2823,23 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(stderr, "harness eval: note: %ld %s repeated by the walks' later runs, printed once\n",
                 hx_warn_repeats(), hx_warn_repeats() == 1 ? "warning or note" : "warnings and notes");
     }
+    if (ev.failures > 0) {
+        /* the experiments' count only when some of their runs failed (with
+         * --no-experiments it read "1 run(s) failed, and 0 of the
+         * experiments' runs"); said before the outputs are closed, so that
+         * an output that cannot be written (exit 3, below) does not hide it
+         * (`--json -` into a closed pipe left only "cannot write -") */
+        const int exp_failed = ev.failures - ev.main_failures;
+        char runs[40] = "", also[80] = "";
+        if (ev.main_failures > 0) {
+            snprintf(runs, sizeof runs, "%d run%s", ev.main_failures, ev.main_failures == 1 ? "" : "s");
+        }
+        if (exp_failed > 0) {
+            snprintf(also, sizeof also, "%s%d of the experiments' runs", ev.main_failures > 0 ? ", and " : "",
+                     exp_failed);
+        }
+        hx_error("eval", "%s%s failed (see the warnings); the results are incomplete", runs, also);
+    }
     if (ev.md != stdout) {
         /* a write that failed on the way (ferror) or at the close: said
          * with the reason, and the JSON still written (not returned before
@@ -2870,21 +2887,5 @@ int hx_cmd_eval(int argc, char **argv)
     if (md_failed) {
         return HX_EXIT_IO;
     }
-    if (ev.failures > 0) {
-        /* the experiments' count only when some of their runs failed (with
-         * --no-experiments it read "1 run(s) failed, and 0 of the
-         * experiments' runs") */
-        const int exp_failed = ev.failures - ev.main_failures;
-        char runs[40] = "", also[80] = "";
-        if (ev.main_failures > 0) {
-            snprintf(runs, sizeof runs, "%d run%s", ev.main_failures, ev.main_failures == 1 ? "" : "s");
-        }
-        if (exp_failed > 0) {
-            snprintf(also, sizeof also, "%s%d of the experiments' runs", ev.main_failures > 0 ? ", and " : "",
-                     exp_failed);
-        }
-        hx_error("eval", "%s%s failed (see the warnings); the results are incomplete", runs, also);
-        return HX_EXIT_DATA;
-    }
-    return HX_EXIT_OK;
+    return ev.failures > 0 ? HX_EXIT_DATA : HX_EXIT_OK;
 }

@@ -2069,6 +2069,16 @@ if [ -n "$D" ]; then
     : > "$T/one/openshoe_gx2/Measurement_100521_98_data_inert.txt"
     expect_exit 1 "eval with one walk that gives no figures" "$H" eval --no-experiments --data "$T/one" --out "$T/one.md"
     expect_err "error: 1 run failed (see the warnings); the results are incomplete$" "eval: one failed run in the singular"
+    # ... and said when an output then fails to be written (exit 3): --json - into a pipe whose reader is gone
+    # (closed before the run, not a race with `| true`) returned before the count, leaving only the write error
+    expect_exit 3 "eval --json - into a closed pipe, one run failed" "${PY:-/usr/bin/python3}" -c 'import os, sys
+r, w = os.pipe(); os.close(r); os.dup2(w, 1); os.close(w); os.execv(sys.argv[1], sys.argv[1:])' \
+        "$H" eval --no-experiments --no-plots --data "$T/one" --out "$T/one_pipe.md" --json -
+    if [ "$(grep -c 'error: ' "$T/err")" -eq 2 ] &&
+        grep -q "error: 1 run failed (see the warnings); the results are incomplete$" "$T/err" &&
+        tail -n 1 "$T/err" | grep -q "^harness eval: error: cannot write .* (Broken pipe)$"; then
+        pass "eval --json - into a closed pipe: the failed run still counted, before the write error"
+    else fail "eval --json - into a closed pipe: $(cat "$T/err")"; fi
     # one warning repeated (the other foot's run of a trial whose events file
     # is cut short): "1 warning or note", not "1 warning(s) and note(s)"
     mkdir -p "$T/rep/ipol_gait_xsens"
