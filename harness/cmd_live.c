@@ -226,9 +226,12 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
 {
     if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
         end_status_line(L);
-        /* with the reason the port kept where the write failed */
+        /* with the reason the port kept where the write failed; --out -
+         * named standard output, as the end's error (it said "the
+         * trajectory CSV (Broken pipe)" of a reader gone) */
         char why[128];
-        hx_error(CMD, "cannot write the trajectory CSV%s; it stops here",
+        hx_error(CMD, "cannot write the trajectory %s%s; it stops here",
+                 L->csv == stdout ? "to standard output" : "CSV",
                  hx_errno_note(L->lctx.write_errno, why, sizeof why));
         L->csv_failed = 1;
         if (L->csv == stdout) {

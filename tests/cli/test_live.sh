@@ -857,7 +857,9 @@ start_link # a fresh pair for the cases below
 expect_rc "$(cat "$T/live.rc")" 3 "live whose CSV reader went away"
 grep_in "$T/live.err" "recorded" "the summary still names the recording"
 # the end's error names standard output, as replay's does (it said "cannot write - (Broken pipe)")
-grep_in "$T/live.err" "cannot write the trajectory to standard output (Broken pipe)" "the end's error names standard output"
+grep_in "$T/live.err" "error: cannot write the trajectory to standard output (Broken pipe)$" "the end's error names standard output"
+# ... and so does the error when the write fails, mid-run (it said "cannot write the trajectory CSV (Broken pipe)")
+grep_in "$T/live.err" "error: cannot write the trajectory to standard output (Broken pipe); it stops here$" "the mid-run error names standard output"
 timeout $LIMIT "$H" info "$T/rec_p.bin" >"$T/info.out" 2>&1
 expect_rc $? 0 "the recording is complete and closed"
 
