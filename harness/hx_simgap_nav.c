@@ -1884,15 +1884,22 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     r->confident = 1;
     if (nv->nst[SG_HOLD] < NAV_MIN_HOLD) {
         const double dof = 3.0 * NAV_MIN_HOLD;
+        const size_t len = (size_t)snprintf(r->why, sizeof r->why,
+                                            "the held-out segment has %d stance%s with zero-velocity updates; the "
+                                            "mean innovation of fewer than %d is not known to -%.0f %% / +%.0f %% "
+                                            "(95 %%)",
+                                            nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD,
+                                            100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
+                                            100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0));
         r->confident = 0;
-        snprintf(r->why, sizeof r->why,
-                 "the held-out segment has %d stance%s with zero-velocity updates; the mean innovation of fewer than "
-                 "%d is not known to -%.0f %% / +%.0f %% (95 %%): a longer walk, %d or more stances in its last "
-                 "%.0f %%%s%g%s",
-                 nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD, 100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
-                 100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0), NAV_MIN_HOLD, 100.0 * (1.0 - r->opts.fit_frac),
-                 r->opts.fit_frac > 0.2 + 1e-9 ? " (or a lower --fit-frac, " : " (--fit-frac ", r->opts.fit_frac,
-                 r->opts.fit_frac > 0.2 + 1e-9 ? " now, to hold out more of it)" : ", holds out the most it can)");
+        if (r->opts.cmd != NULL && strcmp(r->opts.cmd, "simgap") == 0 && len < sizeof r->why) {
+            /* simgap's remedy; simgap-validate has no --fit-frac and names
+             * its own (--walk-duration) after this */
+            snprintf(r->why + len, sizeof r->why - len, ": a longer walk, %d or more stances in its last %.0f %%%s%g%s",
+                     NAV_MIN_HOLD, 100.0 * (1.0 - r->opts.fit_frac),
+                     r->opts.fit_frac > 0.2 + 1e-9 ? " (or a lower --fit-frac, " : " (--fit-frac ", r->opts.fit_frac,
+                     r->opts.fit_frac > 0.2 + 1e-9 ? " now, to hold out more of it)" : ", holds out the most it can)");
+        }
     }
     /* baseline noise */
     if (r->opts.profile != NULL) {

@@ -726,6 +726,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         so.seeds = o->seeds;
         so.seed = dseed; /* no case's twins or bootstrap meet another's, nor any log's */
         so.domain = cs->walk ? 2 : 1;
+        so.cmd = "simgap-validate"; /* its remedy is --walk-duration, said below: not simgap's --fit-frac */
         if (sg_diagnose(&log, "case", &so, res, e2, sizeof e2) != 0) {
             snprintf(err, err_size, "case %d: diagnosis failed: %s", i, e2);
             cs->truth = SGV_NOT_RUN;

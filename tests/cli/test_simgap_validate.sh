@@ -83,6 +83,12 @@ json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" 
 # end)
 [ "$(grep -c "^ *too short for an answer: the held-out segment has .* stance.* (a longer --walk-duration gives one)$" "$T/out")" = 1 ] &&
     pass "the first too-short walk says why, once" || fail "too-short walks: no reason at the first: $(head -3 "$T/out")"
+# ... with simgap-validate's remedy only: it has no --fit-frac (simgap's
+# remedy, added to the reason on 2026-12-07, read "(or a lower --fit-frac,
+# 0.6 now, ...) (a longer --walk-duration gives one)")
+grep "too short for an answer: the held-out" "$T/out" | grep -q -e "--fit-frac" -e "a longer walk" &&
+    fail "too-short walks: simgap's remedy in simgap-validate: $(grep 'held-out' "$T/out")" ||
+    pass "the too-short walk names --walk-duration, not simgap's --fit-frac"
 json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
     for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
 expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 +\(-\) +0/0 +\(-\)$" "too-short effect cases: no top-1, location or parameter in the summary ('-' for no median: it printed nan)"
