@@ -856,9 +856,13 @@ int hx_cmd_psd(int argc, char **argv)
             snprintf(fix, sizeof fix, "a Welch segment needs at least 8 samples: the log is too short for a spectrum");
         }
         if (rc > 0) {
-            /* the input's error is the cause, not a missing option */
-            hx_error(CMD, "%s (the %zu sample%s before it %s fewer than one %u-sample segment)", log.error, log.n,
-                     log.n == 1u ? "" : "s", log.n == 1u ? "is" : "are", (unsigned)nfft);
+            /* the input's error is the cause, not a missing option; its
+             * line was warned when it was read (hx_load_input): the log
+             * named, not the line again, as simgap's and info's closing
+             * error */
+            hx_error(CMD, "%s: incomplete input (warned above): the %zu sample%s before the error %s fewer than one "
+                          "%u-sample segment",
+                     a.pos[0], log.n, log.n == 1u ? "" : "s", log.n == 1u ? "is" : "are", (unsigned)nfft);
         } else {
             hx_error(CMD, "%s: %zu sample%s, fewer than one %u-sample segment; %s", a.pos[0], log.n,
                      log.n == 1u ? "" : "s", (unsigned)nfft, fix);

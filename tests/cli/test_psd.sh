@@ -444,6 +444,16 @@ expect_exit 1 "time stamps that never advance, then a bad line" "$H" psd "$T/sam
 expect_err "sample rate unknown: every time stamp is the same" "a bad line after stamps that never advance: the rate is named"
 ! grep -q "fewer than one" "$T/err" && pass "300 samples are not called fewer than one 64-sample segment" ||
     fail "300 samples called fewer than one 64-sample segment"
+# a bad line after 43 samples, fewer than one segment: the line is said once, in the warning when it is read, and
+# the error names the log, as simgap's and info's (the error repeated 'FILE:45: ... is not a number'; a CLI mutation
+# sweep's find, --seed 102 c0118)
+head -45 "$T/tone.csv" >"$T/shortbad.csv"; echo 0.045,x,1,1,1,1,1 >>"$T/shortbad.csv"
+expect_exit 1 "a bad line after 44 samples" "$H" psd "$T/shortbad.csv"
+expect_err "shortbad.csv:46: column 2 ('x') is not a number (using the 44 samples before it)" "a bad line: warned when read"
+expect_err "shortbad.csv: incomplete input (warned above): the 44 samples before the error are fewer than one 64-sample segment$" \
+    "a bad line before one segment: the error names the log, the samples counted"
+[ "$(grep -c "is not a number" "$T/err")" -eq 1 ] && pass "a bad line before one segment: the line said once" ||
+    fail "a bad line before one segment: the line said $(grep -c "is not a number" "$T/err") times"
 # one stamped sample: too short, not a rate to give (not 'sample rate unknown; give --input-rate', an option the
 # stamped CSV ignores)
 head -2 "$T/same.csv" >"$T/one.csv"
