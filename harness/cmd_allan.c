@@ -192,7 +192,15 @@ static void input_fail(run_t *R, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
     va_end(ap);
-    hx_error(CMD, "%s", R->input_error);
+    /* with samples before it, a warning when it is read and an error at
+     * the end, as info's, psd's and simgap's (hx_load_input): it was an
+     * error here, the analysis then going on under it */
+    if (R->n > 0u) {
+        hx_warn(CMD, "%s (using the %lu sample%s before it)", R->input_error, (unsigned long)R->n,
+                R->n == 1u ? "" : "s");
+    } else {
+        hx_error(CMD, "%s", R->input_error);
+    }
 }
 
 /* A window moves when within its second the rate spreads by more than
@@ -973,7 +981,12 @@ static void series_fail(run_t *R, const char *binary, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
     va_end(ap);
-    hx_error(CMD, "%s", R->input_error);
+    if (R->n > 0u) {
+        hx_warn(CMD, "%s (using the %lu sample%s before it)", R->input_error, (unsigned long)R->n,
+                R->n == 1u ? "" : "s"); /* as input_fail() */
+    } else {
+        hx_error(CMD, "%s", R->input_error);
+    }
 }
 
 /* A series read through zlib (a .gz transparently, as the logs): its first
@@ -3201,10 +3214,7 @@ int hx_cmd_allan(int argc, char **argv)
         m_dropped(R);
     }
     if (input_rc > 0) {
-        /* the log named, as each of allan's warnings about it is (after the
-         * reader's error, its warnings about the samples can come between) */
-        hx_warn(CMD, "%s: analysing the %lu sample%s before the error", path, (unsigned long)R->n,
-                R->n == 1 ? "" : "s");
+        /* said at the end, FILE: incomplete input (below) */
         exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
 
@@ -3453,6 +3463,14 @@ int hx_cmd_allan(int argc, char **argv)
         if (rc != 0) {
             exit_code = worse_exit(exit_code, rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO);
         }
+    }
+    if (input_rc > 0) {
+        /* the bad line was warned when it was read (input_fail): the log
+         * named, not the line again, as info's, psd's and simgap's closing
+         * error (it was "warning: FILE: analysing the N samples before the
+         * error" under an error printed before the analysis) */
+        hx_error(CMD, "%s: incomplete input (warned above): the results cover the %lu sample%s before the error", path,
+                 (unsigned long)R->n, R->n == 1u ? "" : "s");
     }
     if (R->interrupted[0] != '\0' && exit_code != HX_EXIT_IO) {
         exit_code = 128 + (int)hx_stop_sig; /* not a data error found after it (the profile's refusal) */

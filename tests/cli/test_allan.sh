@@ -98,8 +98,22 @@ expect_err "takes no other option (--json)" "paper tables name the option they d
 awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } print "oops" }' >"$T/bad.txt"
 expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
 grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
-# the closing warning names the file too, as allan's others (it named none)
-expect_err "warning: .*bad.txt: analysing the 3000 samples before the error" "what is analysed after a bad line: the file named"
+# the line warned when it is read, the log named in the closing error, as info's, psd's and simgap's (it was an
+# error first, the analysis going on under it, and a closing 'warning: FILE: analysing the N samples before the error')
+expect_err "warning: .*bad.txt:3001: not a number.* (using the 3000 samples before it)" "a bad line: a warning when read"
+expect_err "error: .*bad.txt: incomplete input (warned above): the results cover the 3000 samples before the error" \
+    "what is analysed after a bad line: the closing error names the file"
+[ "$(grep -c "error:" "$T/err")" -eq 1 ] && tail -1 "$T/err" | grep -q "incomplete input" &&
+    pass "a bad line: one error, the last line" || fail "a bad line: not one closing error"
+# the same in a log (time going backwards: a CLI mutation sweep's find, --seed 102 c0036)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.3f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", (i == 2500 ? 1 : i / 100), r / 50, -r / 50, 9.81 + r / 50, r / 500, -r / 500, r / 400 } }' >"$T/back.csv"
+expect_exit 1 "a log whose time goes backwards" "$H" allan "$T/back.csv" --no-sim --quiet
+expect_err "warning: .*back.csv:2502: time goes backwards (1.000000000 s after 24.990000000 s) (using the 2500 samples before it)" \
+    "time going backwards in a log: a warning when read"
+expect_err "error: .*back.csv: incomplete input (warned above): the results cover the 2500 samples before the error" \
+    "time going backwards in a log: the closing error names the file"
+[ "$(grep -c "error:" "$T/err")" -eq 1 ] && pass "time going backwards in a log: one error" ||
+    fail "time going backwards in a log: $(grep -c "error:" "$T/err") errors"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
 # a bad line too early for any Allan point: the samples counted are those before the error, and said so
 # (it said "short.txt: 2 samples are too few" under "short.txt:3: not a number", as if the file's length)
