@@ -1884,13 +1884,22 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     r->confident = 1;
     if (nv->nst[SG_HOLD] < NAV_MIN_HOLD) {
         const double dof = 3.0 * NAV_MIN_HOLD;
-        const size_t len = (size_t)snprintf(r->why, sizeof r->why,
-                                            "the held-out segment has %d stance%s with zero-velocity updates; the "
-                                            "mean innovation of fewer than %d is not known to -%.0f %% / +%.0f %% "
-                                            "(95 %%)",
-                                            nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD,
-                                            100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
-                                            100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0));
+        char known[160];
+        size_t len;
+        /* none: no innovation to average (it read "0 stances ...; the mean
+         * innovation of fewer than 10 is not known to -44 % / +57 %", an
+         * interval about a mean that does not exist) */
+        if (nv->nst[SG_HOLD] == 0) {
+            snprintf(known, sizeof known, "no stance with zero-velocity updates, so no innovation to average");
+        } else {
+            snprintf(known, sizeof known,
+                     "%d stance%s with zero-velocity updates; the mean innovation of fewer than %d is not known to "
+                     "-%.0f %% / +%.0f %% (95 %%)",
+                     nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD,
+                     100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
+                     100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0));
+        }
+        len = (size_t)snprintf(r->why, sizeof r->why, "the held-out segment has %s", known);
         r->confident = 0;
         if (r->opts.cmd != NULL && strcmp(r->opts.cmd, "simgap") == 0 && len < sizeof r->why) {
             /* simgap's remedy; simgap-validate has no --fit-frac and names

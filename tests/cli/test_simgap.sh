@@ -572,12 +572,21 @@ fi
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stance" in j["too_short"]' &&
     pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
-# the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
-# 1.566 at 95 % (scipy chi2.ppf), not to +-50 %
-expect_err "of fewer than 10 is not known to -44 % / +57 % (95 %)" "short walk: the interval of 10 stances"
+# its held-out segment has no stance: said as none, not as an interval about a mean of none ('0 stances ...; the
+# mean innovation of fewer than 10 is not known to -44 % / +57 %'; a CLI mutation sweep's find, --seed 102 c0021)
+expect_err "w2.csv: too short for a confident answer: the held-out segment has no stance with zero-velocity updates, so no innovation to average: a longer walk" \
+    "short walk: no held-out stance, said as none"
+grep -q "is not known to" "$T/err" && fail "short walk: an interval about a mean of none" ||
+    pass "short walk: no interval about a mean of none"
 # and the remedy is named (until 2026-12-07 it was not)
-expect_err "(95 %): a longer walk, 10 or more stances in its last 40 % (or a lower --fit-frac, 0.6 now, to hold out more of it)" \
+expect_err "a longer walk, 10 or more stances in its last 40 % (or a lower --fit-frac, 0.6 now, to hold out more of it)" \
     "short walk: the remedy named"
+# a 6-s walk holds one stance out: the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
+# 1.566 at 95 % (scipy chi2.ppf), not to +-50 %
+"$H" sim --motion walk --duration 6 --rate 100 --profile mtx --seed 5 --out "$T/w6.csv" >/dev/null 2>&1 || fail "sim 6-s walk"
+expect_exit 1 "6-s walk" "$H" simgap "$T/w6.csv" --quiet --seeds 4
+expect_err "the held-out segment has 1 stance with zero-velocity updates; the mean innovation of fewer than 10 is not known to -44 % / +57 % (95 %): a longer walk" \
+    "6-s walk: the interval of 10 stances"
 
 # the domain forced against the detection is said in the summary (the JSON
 # has domain_detected; a walk analysed as a static log is a user's choice)
@@ -601,7 +610,7 @@ expect_exit 1 "a walk without a stance, --plot" "$H" simgap "$T/spin.csv" --walk
 # without a stance in the fit segment the twins get no noise, the walk must
 # not be refused as "the twins do not vary (... a noise-free log?)" with no
 # summary or JSON)
-expect_err "^harness simgap: error: .*spin.csv: too short for a confident answer: the held-out segment has 0 stances" "a walk without a stance: too short, said"
+expect_err "^harness simgap: error: .*spin.csv: too short for a confident answer: the held-out segment has no stance with zero-velocity updates" "a walk without a stance: too short, said"
 json "$T/spin.json" 'j["verdict"]["answer"] == "too-short" and j["navigation"]["stances_full"] == 0 and all(l["domain"] != "nav" for l in j["locations"])' &&
     pass "a walk without a stance: no navigation point located" || fail "no-stance JSON: $(cat "$T/pyerr")"
 # a walk with a 5 s gap in its samples: the innovation plot draws each stance
