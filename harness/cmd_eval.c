@@ -835,7 +835,9 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
                 path, g->cut_line, g->cut_text);
     }
     if (g->n < 2) {
-        snprintf(why, why_size, "truth file has %d readable stride rows (strideIndex, _, x, y), 2 needed", g->n);
+        /* "1 readable stride rows" read wrongly */
+        snprintf(why, why_size, "truth file has %d readable stride row%s (strideIndex, _, x, y), 2 needed", g->n,
+                 g->n == 1 ? "" : "s");
         return -1;
     }
     return 0;

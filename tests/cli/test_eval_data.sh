@@ -152,12 +152,12 @@ if [ "$(wc -c <"$ID/1-4.json")" -eq 16777216 ] && [ "$(wc -c <"$ID/1-3.json")" -
 tb_row() { # description pattern: a row of tbad.md
     if grep -q "$2" "$T/tbad.md"; then pass "$1"; else fail "$1: no row /$2/"; grep "not run" "$T/tbad.md"; fi
 }
-tb_row "one readable stride row" "^| one | - |.*| not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
+tb_row "one readable stride row" "^| one | - |.*| not run: truth file has 1 readable stride row (strideIndex, _, x, y), 2 needed |$"
 tb_row "no readable stride row (junk, 1e7 m, five fields)" \
     "^| junk | - |.*| not run: truth file has 0 readable stride rows (strideIndex, _, x, y), 2 needed |$"
 tb_row "1,025 strides" "^| many | - |.*| not run: truth file has more than 1024 strides |$"
 tb_row "vicon: one readable stride row" \
-    "^| one | - | - | - | - | not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
+    "^| one | - | - | - | - | not run: truth file has 1 readable stride row (strideIndex, _, x, y), 2 needed |$"
 tb_row "every motion-capture position beyond 1e6 m" "^| far | - |.*| not run: no motion-capture position columns |$"
 # ... with the spans to check it by: the log's, the truth strides' (samples and s), how many lie inside (the
 # bare phrase gave no number)
@@ -176,9 +176,9 @@ json "$T/tbad.json" 'j["failed_runs"] == 17' && pass "each refused truth is a fa
     fail "refused truths: failed_runs $(grep -o '"failed_runs":[^,]*' "$T/tbad.json")"
 # the warning names the truth file it is about (not the walk's IMU log); a
 # missing one, the IMU log ("W_imu.csv: no truth file W_strides_gcp.csv")
-expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable stride rows" "the refusal names the truth file"
+expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable stride row " "the refusal names the truth file"
 expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
-expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride rows" "vicon: the refusal names the truth file"
+expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride row " "vicon: the refusal names the truth file"
 expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no position: the IMU log that holds them named"
 expect_err "own_3dmgx5_footprints/out_imu.csv: $outw\$" "a truth past the log's end: warned with the spans"
 # a recording's events file serves both feet: its TrialBoundaries error was warned once per foot, now once per
