@@ -830,13 +830,12 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         /* the gaps said with what they lost: the series is read as if its
          * samples were consecutive (a 60 s hole in an hour was only "3
          * intervals differ"); a stamp written twice said as such */
-        char head[96], what[300];
+        char what[400];
         /* of how many, and the period they were checked against, as psd's
          * ("N intervals differ from 1/rate" named neither) */
-        hx_irregular_head(head, sizeof head, irregular, checked, stamp_rate);
-        hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)R->n);
-        hx_warn(CMD, "%s: %s%s: the Allan variance assumes uniform sampling%s", path, head, what,
-                hx_gaps_joined(gaps));
+        hx_irregular_text(what, sizeof what, irregular, checked, stamp_rate, repeats, gaps, longest_gap_s, missing,
+                          (double)R->n);
+        hx_warn(CMD, "%s: %s: the Allan variance assumes uniform sampling%s", path, what, hx_gaps_joined(gaps));
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
         /* not with --rate, which sets the rate the analysis takes; the

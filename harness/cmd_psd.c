@@ -918,10 +918,10 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         if (irregular > 0) {
-            char head[96], what[300];
-            hx_irregular_head(head, sizeof head, irregular, log.n - 1, rate);
-            hx_irregular_text(what, sizeof what, irregular, repeats, gaps, longest_gap_s, missing, (double)log.n);
-            hx_warn(CMD, "%s: %s%s: Welch assumes uniform sampling%s", a.pos[0], head, what, hx_gaps_joined(gaps));
+            char what[400];
+            hx_irregular_text(what, sizeof what, irregular, log.n - 1, rate, repeats, gaps, longest_gap_s, missing,
+                              (double)log.n);
+            hx_warn(CMD, "%s: %s: Welch assumes uniform sampling%s", a.pos[0], what, hx_gaps_joined(gaps));
         }
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,

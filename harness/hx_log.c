@@ -5486,26 +5486,22 @@ hx_format_t hx_detect_file(const char *path)
     return got > 0 ? detect(head, (size_t)got) : HX_FMT_AUTO;
 }
 
-void hx_irregular_head(char *buf, size_t size, long irregular, size_t total, double rate_hz)
+void hx_irregular_text(char *buf, size_t size, long irregular, size_t total, double rate_hz, long repeats, long gaps,
+                       double longest_gap_s, double missing, double n)
 {
-    snprintf(buf, size, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%", irregular, total,
-             irregular == 1 ? "differs" : "differ", rate_hz);
-}
-
-void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
-                       double missing, double n)
-{
-    char rep[96] = "", gap[192] = "";
+    char head[96], rep[96] = "", gap[192] = "";
     const double pct = 100.0 * missing / (n + missing > 0.0 ? n + missing : 1.0);
     const char *ms = missing == 1.0 ? "" : "s";
+    snprintf(head, sizeof head, "%ld of %zu intervals %s from 1/%.4g s by more than 10 %%", irregular, total,
+             irregular == 1 ? "differs" : "differ", rate_hz);
     if (irregular == 1 && repeats + gaps <= 1) {
         /* one interval: what it is, in brackets ("1 interval differs ...,
          * 1 of them a gap (longest ...)" read awkwardly) */
         if (gaps == 1) {
-            snprintf(buf, size, " (a gap of %.3g s; about %.0f sample%s missing, %.2g %% of the log)", longest_gap_s,
-                     missing, ms, pct);
+            snprintf(buf, size, "%s (a gap of %.3g s; about %.0f sample%s missing, %.2g %% of the log)", head,
+                     longest_gap_s, missing, ms, pct);
         } else {
-            snprintf(buf, size, "%s", repeats == 1 ? " (a time stamp repeated)" : "");
+            snprintf(buf, size, "%s%s", head, repeats == 1 ? " (a time stamp repeated)" : "");
         }
         return;
     }
@@ -5522,7 +5518,7 @@ void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, lon
         snprintf(gap, sizeof gap, ", 1 of them a gap of %.3g s (about %.0f sample%s missing, %.2g %% of the log)",
                  longest_gap_s, missing, ms, pct);
     }
-    snprintf(buf, size, "%s%s", rep, gap);
+    snprintf(buf, size, "%s%s%s", head, rep, gap);
 }
 
 const char *hx_gaps_joined(long gaps)

@@ -318,18 +318,16 @@ int hx_ends_in(const char *s, size_t end, const char *suffix);
  *  increase. *coarse (may be NULL) is set to 1 when the stamps were coarse. */
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
 /** What the irregular intervals of a log were, for allan's and psd's
- *  warning: ", N of them time stamps repeated, M of them gaps (longest L
- *  s; about K samples missing in all, P % of the log)" (either part left
- *  out when 0) into buf; of one irregular interval, what it is: " (a gap
- *  of L s; about K samples missing, P % of the log)", " (a time stamp
- *  repeated)" or "". n the samples read. */
-void hx_irregular_text(char *buf, size_t size, long irregular, long repeats, long gaps, double longest_gap_s,
-                       double missing, double n);
-/** The head of allan's and psd's warning of irregular intervals, one form
- *  for both: "N of M intervals differ from 1/R s by more than 10 %" ("1 of
- *  M intervals differs"), M the intervals checked, R the rate in Hz they
- *  were checked against (%.4g), into buf; hx_irregular_text follows it. */
-void hx_irregular_head(char *buf, size_t size, long irregular, size_t total, double rate_hz);
+ *  warning, one form for both: "N of M intervals differ from 1/R s by more
+ *  than 10 %, N of them time stamps repeated, M of them gaps (longest L s;
+ *  about K samples missing in all, P % of the log)" (either part left out
+ *  when 0) into buf; of one irregular interval ("1 of M intervals
+ *  differs ..."), what it is: " (a gap of L s; about K samples missing, P %
+ *  of the log)", " (a time stamp repeated)" or nothing. total the
+ *  intervals checked, rate_hz the rate they were checked against (%.4g), n
+ *  the samples read. */
+void hx_irregular_text(char *buf, size_t size, long irregular, size_t total, double rate_hz, long repeats, long gaps,
+                       double longest_gap_s, double missing, double n);
 /** ", and the samples are joined across the gap(s) as if consecutive"
  *  for gaps > 0, else "". */
 const char *hx_gaps_joined(long gaps);
