@@ -183,6 +183,19 @@ typedef struct {
     double dev_done, dev_total; /* their work done and in all (dev_cost units) */
 } run_t;
 
+/* R->input_error said: with samples before it, a warning when it is read
+ * and an error at the end, as info's, psd's and simgap's (hx_load_input):
+ * it was an error here, the analysis then going on under it */
+static void say_input_error(const run_t *R)
+{
+    if (R->n > 0u) {
+        hx_warn(CMD, "%s (using the %lu sample%s before it)", R->input_error, (unsigned long)R->n,
+                R->n == 1u ? "" : "s");
+    } else {
+        hx_error(CMD, "%s", R->input_error);
+    }
+}
+
 /* An error of the input that stops the reading: said, and kept for the
  * JSON's `error` (beside `complete`), so that the JSON tells a record read
  * in part */
@@ -192,15 +205,7 @@ static void input_fail(run_t *R, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
     va_end(ap);
-    /* with samples before it, a warning when it is read and an error at
-     * the end, as info's, psd's and simgap's (hx_load_input): it was an
-     * error here, the analysis then going on under it */
-    if (R->n > 0u) {
-        hx_warn(CMD, "%s (using the %lu sample%s before it)", R->input_error, (unsigned long)R->n,
-                R->n == 1u ? "" : "s");
-    } else {
-        hx_error(CMD, "%s", R->input_error);
-    }
+    say_input_error(R);
 }
 
 /* A window moves when within its second the rate spreads by more than
@@ -980,12 +985,7 @@ static void series_fail(run_t *R, const char *binary, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
     va_end(ap);
-    if (R->n > 0u) {
-        hx_warn(CMD, "%s (using the %lu sample%s before it)", R->input_error, (unsigned long)R->n,
-                R->n == 1u ? "" : "s"); /* as input_fail() */
-    } else {
-        hx_error(CMD, "%s", R->input_error);
-    }
+    say_input_error(R);
 }
 
 /* A series read through zlib (a .gz transparently, as the logs): its first
